@@ -1,0 +1,187 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/partitioner.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <mpm/parameters/parameters.h>
+#include <mpm/shape_functions/q1_cell.h>
+
+#include <memory>
+#include <vector>
+
+namespace mpm
+{
+  using NodalVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+  /**
+   * The Q1 background grid: the triangulation (distributed with p4est in
+   * 2D/3D, serial in 1D), its degrees of freedom (one per vertex = grid
+   * node), the geometry of every cell for direct Q1 evaluation, and the
+   * boundary constraints of the nodes.
+   *
+   * Nodal quantities are stored "packed": n_components values per node,
+   * node-major, in a distributed vector whose local numbering matches
+   * local_node(): node-local index i, component c is entry i*nc + c.
+   */
+  template <int dim>
+  class BackgroundGrid
+  {
+  public:
+    static constexpr unsigned int n_vertices = shape_functions::n_q1<dim>;
+
+    explicit BackgroundGrid(const MPI_Comm comm);
+
+    /// Build the triangulation; mesh paths are tried relative to
+    /// @p input_folder first. Throws InputError on bad input.
+    void
+    create(const Parameters::Grid<dim> &prm, const std::string &input_folder);
+
+    /// Distribute nodes, cache cell geometry and node constraints.
+    void
+    setup(const Parameters::BoundaryConditions &bc);
+
+    dealii::Triangulation<dim> &
+    triangulation()
+    {
+      return *tria;
+    }
+    const dealii::Triangulation<dim> &
+    triangulation() const
+    {
+      return *tria;
+    }
+    const dealii::Mapping<dim> &
+    mapping() const
+    {
+      return *mapping_ptr;
+    }
+    const dealii::DoFHandler<dim> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+
+    /// Geometry of an owned or ghost cell.
+    const shape_functions::Q1Cell<dim> &
+    geometry(const typename dealii::Triangulation<dim>::active_cell_iterator
+               &cell) const
+    {
+      return cell_geometry[cell->active_cell_index()];
+    }
+
+    /// Node-local indices of a cell's vertices (deal.II vertex order).
+    const unsigned int *
+    nodes(const typename dealii::Triangulation<dim>::active_cell_iterator
+            &cell) const
+    {
+      return &cell_nodes[cell->active_cell_index() * n_vertices];
+    }
+
+    /// Smallest height of a cell (for the CFL condition).
+    double
+    cell_height(const typename dealii::Triangulation<dim>::active_cell_iterator
+                  &cell) const
+    {
+      return cell_heights[cell->active_cell_index()];
+    }
+
+    /// Number of owned nodes (they come first in the local numbering).
+    unsigned int
+    n_owned_nodes() const
+    {
+      return n_owned;
+    }
+    /// Owned plus ghost nodes.
+    unsigned int
+    n_local_nodes() const
+    {
+      return n_owned + n_ghost;
+    }
+    const dealii::Point<dim> &
+    node_position(const unsigned int i) const
+    {
+      return node_positions[i];
+    }
+
+    /// Whether every cell of the whole grid is an axis-parallel box.
+    bool
+    is_cartesian() const
+    {
+      return cartesian;
+    }
+
+    /// A vector with @p n_components values per node.
+    void
+    initialize_vector(NodalVector &v, const unsigned int n_components) const;
+
+    /// Remove the constrained components of a nodal vector quantity
+    /// (fixed: all, slip: the normal ones) at owned node i.
+    void
+    constrain(const unsigned int i, double *value) const
+    {
+      const auto c = constraint_of_node[i];
+      if (c == dealii::numbers::invalid_unsigned_int)
+        return;
+      const auto &nc = constraints[c];
+      for (unsigned int k = 0; k < nc.n_normals; ++k)
+        {
+          double dot = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            dot += value[d] * nc.normals[k][d];
+          for (unsigned int d = 0; d < dim; ++d)
+            value[d] -= dot * nc.normals[k][d];
+        }
+    }
+
+    /// Global grid statistics for the screen.
+    dealii::types::global_cell_index
+    n_global_cells() const
+    {
+      return tria->n_global_active_cells();
+    }
+    dealii::types::global_dof_index
+    n_global_nodes() const
+    {
+      return dofs.n_dofs();
+    }
+
+    /// Bounding boxes of the owned part of every rank (for inserting
+    /// particles anywhere in the distributed grid).
+    std::vector<std::vector<dealii::BoundingBox<dim>>>
+    global_bounding_boxes() const;
+
+    /// The scalar partitioner (one entry per node).
+    std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
+    node_partitioner() const
+    {
+      return partitioner;
+    }
+
+  private:
+    struct NodeConstraint
+    {
+      unsigned int                               n_normals = 0;
+      std::array<dealii::Tensor<1, dim>, dim>    normals;
+    };
+
+    MPI_Comm                                        comm;
+    std::unique_ptr<dealii::Triangulation<dim>>     tria;
+    std::unique_ptr<dealii::Mapping<dim>>           mapping_ptr;
+    dealii::FE_Q<dim>                               fe;
+    dealii::DoFHandler<dim>                         dofs;
+    std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
+    std::vector<shape_functions::Q1Cell<dim>>       cell_geometry;
+    std::vector<unsigned int>                       cell_nodes;
+    std::vector<double>                             cell_heights;
+    std::vector<dealii::Point<dim>>                 node_positions;
+    std::vector<unsigned int>                       constraint_of_node;
+    std::vector<NodeConstraint>                     constraints;
+    unsigned int                                    n_owned = 0, n_ghost = 0;
+    bool                                            cartesian = false;
+  };
+} // namespace mpm

@@ -1,0 +1,69 @@
+#pragma once
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <mpm/grid/background_grid.h>
+#include <mpm/particles/particle_layout.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mpm
+{
+  /**
+   * Writes what ParaView and scripts read: particles-NNNNN.pvtu and
+   * grid-NNNNN.pvtu with particles.pvd / grid.pvd time series, and the
+   * particle table particles-NNNNN.csv (all properties, sorted by id,
+   * gathered on rank 0). Files are written to a temporary name and renamed
+   * into place, so an interrupted run never leaves a half-written file.
+   */
+  template <int dim>
+  class OutputWriter
+  {
+  public:
+    OutputWriter(const MPI_Comm                  comm,
+                 const std::string &             directory,
+                 const ParticleLayout<dim> &     layout,
+                 const std::vector<std::string> &history_names);
+
+    void
+    write_particles_vtu(dealii::Particles::ParticleHandler<dim> &particles,
+                        const double                            time);
+
+    void
+    write_grid_vtu(const BackgroundGrid<dim> &grid,
+                   const NodalVector &        p2g,
+                   const NodalVector &        kinematics,
+                   const double               time);
+
+    void
+    write_particles_csv(dealii::Particles::ParticleHandler<dim> &particles,
+                        const double                            time);
+
+    /// Number of outputs written so far (the NNNNN of the file names).
+    unsigned int
+    counter() const
+    {
+      return n_outputs;
+    }
+    void
+    advance()
+    {
+      ++n_outputs;
+    }
+
+  private:
+    MPI_Comm                                  comm;
+    std::string                               directory;
+    ParticleLayout<dim>                       layout;
+    std::vector<std::string>                  history_names;
+    unsigned int                              n_outputs = 0;
+    std::vector<std::pair<double, std::string>> particle_records, grid_records;
+  };
+
+  /// Write @p content to @p file_name via a temporary file and a rename.
+  void
+  write_file_atomically(const std::string &file_name,
+                        const std::string &content);
+} // namespace mpm

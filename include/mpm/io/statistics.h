@@ -1,0 +1,59 @@
+#pragma once
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <mpm/particles/body.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  /// Global sums over all particles, for the statistics file and tests.
+  template <int dim>
+  struct GlobalStatistics
+  {
+    unsigned long long n_particles    = 0;
+    double             mass           = 0;
+    double             kinetic_energy = 0;
+    double             strain_energy  = 0;
+    double             momentum[dim]  = {};
+    double             angular_momentum[3] = {}; // about the origin
+    double             removed_mass   = 0;
+
+    /// Compute on every rank (collective).
+    void
+    compute(dealii::Particles::ParticleHandler<dim> &particles,
+            const std::vector<Body<dim>> &          bodies,
+            const MPI_Comm                          comm);
+  };
+
+  /**
+   * The statistics file: one row per output time, whitespace separated
+   * with a '#' header naming every column (gnuplot and pandas read it:
+   * pandas.read_csv(f, sep=r"\s+", comment=None, header=0) after stripping
+   * the leading '# ').
+   */
+  template <int dim>
+  class StatisticsFile
+  {
+  public:
+    void
+    open(const std::string &file_name,
+         const std::vector<std::string> &extra_columns);
+
+    void
+    write_row(const double                     time,
+              const unsigned int               step,
+              const double                     dt,
+              const GlobalStatistics<dim> &    s,
+              const std::vector<double> &      extra);
+
+    static std::vector<std::string>
+    column_names(const std::vector<std::string> &extra_columns);
+
+  private:
+    std::ofstream out;
+  };
+} // namespace mpm

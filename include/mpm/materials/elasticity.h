@@ -1,0 +1,101 @@
+#pragma once
+
+#include <mpm/materials/material.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+namespace mpm
+{
+  namespace materials
+  {
+    /**
+     * Building blocks shared by the isotropic (hypo)elastic models: elastic
+     * constants, the elastic law for every kinematic assumption, the
+     * complementary energy and the Hughes-Winget objective update.
+     */
+    namespace elasticity
+    {
+      /// Isotropic elastic constants, stored as Young's modulus and
+      /// Poisson's ratio (the parameters the user gives).
+      struct IsotropicConstants
+      {
+        double youngs_modulus = 1;
+        double poissons_ratio = 0;
+
+        /// First Lame parameter.
+        double
+        lambda() const;
+
+        /// Shear modulus.
+        double
+        mu() const;
+
+        /// Bulk modulus.
+        double
+        bulk_modulus() const;
+
+        /// Modulus of a longitudinal (p-) wave under assumption @p k:
+        /// lambda + 2 mu (3D, plane strain, uniaxial strain), E/(1-nu^2)
+        /// (plane stress) or E (uniaxial stress).
+        double
+        p_wave_modulus(const KinematicAssumption k) const;
+      };
+
+      /// Declare "Young's modulus" and "Poisson's ratio" in the current
+      /// subsection.
+      void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /// Read and validate the entries declared by declare_parameters().
+      /// Throws mpm::InputError naming the offending parameter.
+      IsotropicConstants
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Elastic stress increment for the strain increment @p d_eps (an
+       * embedded 3x3 tensor) under the assumption @p k. Components that the
+       * assumption keeps at zero stay zero.
+       */
+      dealii::SymmetricTensor<2, 3>
+      stress_increment(const IsotropicConstants            &c,
+                       const dealii::SymmetricTensor<2, 3> &d_eps,
+                       const KinematicAssumption            k);
+
+      /// Complementary energy per unit current volume,
+      /// 1/(2E) [(1+nu) s:s - nu (tr s)^2].
+      double
+      complementary_energy(const IsotropicConstants            &c,
+                           const dealii::SymmetricTensor<2, 3> &stress);
+
+      /// Hughes-Winget incremental rotation
+      /// R = (I - dt W/2)^-1 (I + dt W/2), W = skew(L). R is orthogonal to
+      /// round-off for any dt (a Cayley transform).
+      dealii::Tensor<2, 3>
+      hughes_winget_rotation(const dealii::Tensor<2, 3> &velocity_gradient,
+                             const double                dt);
+
+      /// R sigma R^T.
+      dealii::SymmetricTensor<2, 3>
+      rotate(const dealii::SymmetricTensor<2, 3> &stress,
+             const dealii::Tensor<2, 3>          &R);
+
+      /// Set the components that the assumption @p k keeps at zero to zero
+      /// (plane stress: zz, xz, yz; uniaxial stress: all but xx).
+      void
+      zero_constrained_components(dealii::SymmetricTensor<2, 3> &stress,
+                                  const KinematicAssumption      k);
+
+      /**
+       * Incrementally objective hypoelastic update (Jaumann rate):
+       * stress <- R stress R^T + C : (sym(L) dt).
+       */
+      void
+      hypoelastic_update(const IsotropicConstants      &c,
+                         const PointKinematics         &kinematics,
+                         const KinematicAssumption      k,
+                         dealii::SymmetricTensor<2, 3> &stress);
+    } // namespace elasticity
+  }   // namespace materials
+} // namespace mpm

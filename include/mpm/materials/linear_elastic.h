@@ -1,0 +1,57 @@
+#pragma once
+
+#include <mpm/materials/elasticity.h>
+#include <mpm/materials/material.h>
+
+namespace mpm
+{
+  namespace materials
+  {
+    /**
+     * Isotropic hypoelastic material: the Jaumann rate of the Cauchy stress
+     * is C : D, integrated with the incrementally objective Hughes-Winget
+     * scheme. Supports every kinematic assumption. For small strains it is
+     * linear elasticity.
+     */
+    class LinearElastic : public Material
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      std::string
+      name() const override;
+
+      bool
+      supports(const KinematicAssumption k) const override;
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override;
+
+      void
+      update_stress(const PointKinematics   &kinematics,
+                    SymmetricTensor<2, 3>   &stress,
+                    const ArrayView<double> &history) const override;
+
+      /// J times the complementary energy of the stress.
+      double
+      strain_energy_density(
+        const SymmetricTensor<2, 3>   &stress,
+        const Tensor<2, 3>            &F,
+        const ArrayView<const double> &history) const override;
+
+      /// Longitudinal wave speed of the assumption, sqrt(M max(J,1)/rho0).
+      double
+      wave_speed(const Tensor<2, 3> &F) const override;
+
+      const elasticity::IsotropicConstants &
+      elastic_constants() const
+      {
+        return constants;
+      }
+
+    private:
+      elasticity::IsotropicConstants constants;
+    };
+  } // namespace materials
+} // namespace mpm

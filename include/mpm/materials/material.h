@@ -1,0 +1,183 @@
+#pragma once
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  /**
+   * How a model of dimension 1 or 2 is embedded in three-dimensional
+   * continuum mechanics. Materials always see 3x3 tensors; this tells them
+   * which out-of-plane components are constrained and which are free.
+   */
+  enum class KinematicAssumption
+  {
+    three_dimensional, ///< 3D models
+    plane_strain,      ///< 2D: eps_zz = 0, sigma_zz follows
+    plane_stress,      ///< 2D: sigma_zz = 0, eps_zz follows
+    uniaxial_strain,   ///< 1D: only eps_xx, lateral stresses follow
+    uniaxial_stress    ///< 1D: only sigma_xx (a thin bar)
+  };
+
+  std::string
+  to_string(const KinematicAssumption k);
+
+  namespace materials
+  {
+    using dealii::ArrayView;
+    using dealii::SymmetricTensor;
+    using dealii::Tensor;
+
+    /**
+     * Kinematics of one material point over one explicit step, embedded in
+     * 3D: rows and columns of out-of-plane directions of L are zero, and
+     * the out-of-plane diagonal of F is one.
+     */
+    struct PointKinematics
+    {
+      Tensor<2, 3> velocity_gradient; ///< L = grad v (current configuration)
+      Tensor<2, 3> F;                 ///< deformation gradient, end of step
+      double       dt = 0;            ///< step length
+    };
+
+    /**
+     * A constitutive model. The solver calls update_stress() once per
+     * particle and step; everything else is for statistics and the time
+     * step. Implementations are stateless: per-particle internal variables
+     * live in the particle's history slots.
+     */
+    class Material
+    {
+    public:
+      virtual ~Material() = default;
+
+      /// Name as written in the parameter file.
+      virtual std::string
+      name() const = 0;
+
+      /// Whether the model is implemented for this embedding.
+      virtual bool
+      supports(const KinematicAssumption k) const = 0;
+
+      /// Read the model's own subsection (prm is already inside it).
+      virtual void
+      parse_parameters(dealii::ParameterHandler &prm) = 0;
+
+      /// Number of per-particle history variables.
+      virtual unsigned int
+      n_history() const
+      {
+        return 0;
+      }
+
+      /// Names of the history variables, for output.
+      virtual std::vector<std::string>
+      history_names() const
+      {
+        return {};
+      }
+
+      /// Advance the Cauchy stress over one step.
+      virtual void
+      update_stress(const PointKinematics &  kinematics,
+                    SymmetricTensor<2, 3> &  stress,
+                    const ArrayView<double> &history) const = 0;
+
+      /// Stored strain energy per unit reference volume.
+      virtual double
+      strain_energy_density(const SymmetricTensor<2, 3> &   stress,
+                            const Tensor<2, 3> &            F,
+                            const ArrayView<const double> &history) const = 0;
+
+      /// Largest wave speed of the current state (for the CFL condition).
+      virtual double
+      wave_speed(const Tensor<2, 3> &F) const = 0;
+
+      /// Reference mass density rho_0.
+      double
+      reference_density() const
+      {
+        return density;
+      }
+
+      KinematicAssumption
+      kinematic_assumption() const
+      {
+        return kinematics;
+      }
+
+      /// Called by the factory before parse_parameters().
+      void
+      set_common(const double rho0, const KinematicAssumption k)
+      {
+        density    = rho0;
+        kinematics = k;
+      }
+
+    protected:
+      double              density    = 1.0;
+      KinematicAssumption kinematics = KinematicAssumption::three_dimensional;
+    };
+
+    /**
+     * Registry of material models. A model registers itself once with
+     * MPM_REGISTER_MATERIAL in its source file; the parameter file chooses
+     * it by name in `subsection Material / set Model = ...`.
+     */
+    struct MaterialEntry
+    {
+      std::string                                      name;
+      std::string                                      description;
+      std::function<void(dealii::ParameterHandler &)>  declare_parameters;
+      std::function<std::unique_ptr<Material>()>       create;
+    };
+
+    /// Add a model to the registry (called at static initialisation).
+    bool
+    register_material(const MaterialEntry &entry);
+
+    /// All registered models, sorted by name.
+    std::vector<MaterialEntry>
+    registered_materials();
+
+    /**
+     * Declare `Model`, `Density` and one subsection per registered model in
+     * the current subsection of @p prm.
+     */
+    void
+    declare_material_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Create the model chosen in the current subsection of @p prm and parse
+     * its parameters. Throws mpm::InputError naming @p where if the model
+     * does not support the kinematic assumption.
+     */
+    std::unique_ptr<Material>
+    create_material(dealii::ParameterHandler &prm,
+                    const KinematicAssumption k,
+                    const std::string &       where);
+
+    /// The section name used for a model in the parameter file.
+    std::string
+    subsection_name(const std::string &model_name);
+  } // namespace materials
+} // namespace mpm
+
+#define MPM_REGISTER_MATERIAL(classname, model_name, model_description)     \
+  namespace                                                                \
+  {                                                                        \
+    const bool registered_##classname = mpm::materials::register_material( \
+      {model_name,                                                         \
+       model_description,                                                  \
+       &classname::declare_parameters,                                     \
+       []() -> std::unique_ptr<mpm::materials::Material> {                 \
+         return std::make_unique<classname>();                             \
+       }});                                                                \
+  }

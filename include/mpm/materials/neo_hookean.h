@@ -1,0 +1,63 @@
+#pragma once
+
+#include <mpm/materials/elasticity.h>
+#include <mpm/materials/material.h>
+
+namespace mpm
+{
+  namespace materials
+  {
+    /**
+     * Compressible neo-Hookean hyperelastic material,
+     * psi = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, with
+     * sigma = (mu (b - I) + lambda ln J I) / J evaluated from F (the
+     * previous stress is not used). The Lame parameters are given as
+     * Young's modulus and Poisson's ratio. Supports three-dimensional,
+     * plane strain and uniaxial strain models.
+     */
+    class NeoHookean : public Material
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      std::string
+      name() const override;
+
+      bool
+      supports(const KinematicAssumption k) const override;
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override;
+
+      void
+      update_stress(const PointKinematics   &kinematics,
+                    SymmetricTensor<2, 3>   &stress,
+                    const ArrayView<double> &history) const override;
+
+      /// psi(F); the stress argument is not used.
+      double
+      strain_energy_density(
+        const SymmetricTensor<2, 3>   &stress,
+        const Tensor<2, 3>            &F,
+        const ArrayView<const double> &history) const override;
+
+      /// Largest eigenvalue of the acoustic tensor of the current state.
+      double
+      wave_speed(const Tensor<2, 3> &F) const override;
+
+      /// Cauchy stress for the deformation gradient F.
+      SymmetricTensor<2, 3>
+      cauchy_stress(const Tensor<2, 3> &F) const;
+
+      const elasticity::IsotropicConstants &
+      elastic_constants() const
+      {
+        return constants;
+      }
+
+    private:
+      elasticity::IsotropicConstants constants;
+    };
+  } // namespace materials
+} // namespace mpm

@@ -1,0 +1,85 @@
+#pragma once
+
+#include <mpm/materials/material.h>
+
+namespace mpm
+{
+  namespace materials
+  {
+    /**
+     * Compressible Newtonian fluid, sigma = -p(J) I + 2 mu dev(D), with
+     * D = sym(L) and the pressure from a barotropic equation of state:
+     *   linear: p = K (1/J - 1)
+     *   Tait:   p = K/gamma (J^-gamma - 1).
+     * Supports three-dimensional, plane strain and uniaxial strain models.
+     */
+    class NewtonianFluid : public Material
+    {
+    public:
+      enum class EquationOfState
+      {
+        linear,
+        tait
+      };
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      std::string
+      name() const override;
+
+      bool
+      supports(const KinematicAssumption k) const override;
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override;
+
+      void
+      update_stress(const PointKinematics   &kinematics,
+                    SymmetricTensor<2, 3>   &stress,
+                    const ArrayView<double> &history) const override;
+
+      /// psi(J) with p = -dpsi/dJ and psi(1) = 0; viscous work is
+      /// dissipated, not stored.
+      double
+      strain_energy_density(
+        const SymmetricTensor<2, 3>   &stress,
+        const Tensor<2, 3>            &F,
+        const ArrayView<const double> &history) const override;
+
+      /// Sound speed sqrt(dp/drho) = sqrt(K/rho0 J^(1-gamma)) (gamma = 1
+      /// for the linear law). Does not include a viscous limit.
+      double
+      wave_speed(const Tensor<2, 3> &F) const override;
+
+      /// Pressure p(J) from the equation of state.
+      double
+      pressure(const double J) const;
+
+      double
+      viscosity() const
+      {
+        return mu;
+      }
+
+      double
+      bulk_modulus() const
+      {
+        return K;
+      }
+
+      /// gamma for Tait, 1 for the linear law.
+      double
+      exponent() const
+      {
+        return eos == EquationOfState::tait ? gamma : 1.0;
+      }
+
+    private:
+      double          mu    = 0;
+      EquationOfState eos   = EquationOfState::linear;
+      double          K     = 1;
+      double          gamma = 7;
+    };
+  } // namespace materials
+} // namespace mpm

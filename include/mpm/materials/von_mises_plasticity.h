@@ -1,0 +1,87 @@
+#pragma once
+
+#include <mpm/materials/elasticity.h>
+#include <mpm/materials/material.h>
+
+namespace mpm
+{
+  namespace materials
+  {
+    /**
+     * Hypoelastic-plastic material with a von Mises yield surface and
+     * linear isotropic hardening. Each step rotates the stress with the
+     * Hughes-Winget rotation, adds the elastic trial increment and returns
+     * radially to the yield surface
+     *   f = |s| - sqrt(2/3) (sigma_y + H alpha) <= 0,
+     * where alpha is the equivalent plastic strain (the one history
+     * variable). Supports three-dimensional, plane strain and uniaxial
+     * strain models.
+     */
+    class VonMisesPlasticity : public Material
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      std::string
+      name() const override;
+
+      bool
+      supports(const KinematicAssumption k) const override;
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override;
+
+      /// 1: the equivalent plastic strain.
+      unsigned int
+      n_history() const override;
+
+      std::vector<std::string>
+      history_names() const override;
+
+      void
+      update_stress(const PointKinematics   &kinematics,
+                    SymmetricTensor<2, 3>   &stress,
+                    const ArrayView<double> &history) const override;
+
+      /// Stored elastic energy: J times the complementary energy.
+      double
+      strain_energy_density(
+        const SymmetricTensor<2, 3>   &stress,
+        const Tensor<2, 3>            &F,
+        const ArrayView<const double> &history) const override;
+
+      /// Elastic p-wave speed, sqrt((lambda + 2 mu) max(J,1) / rho0).
+      double
+      wave_speed(const Tensor<2, 3> &F) const override;
+
+      /// f(stress, alpha); positive outside the elastic domain.
+      double
+      yield_function(const SymmetricTensor<2, 3> &stress,
+                     const double                 alpha) const;
+
+      const elasticity::IsotropicConstants &
+      elastic_constants() const
+      {
+        return constants;
+      }
+
+      double
+      yield_stress() const
+      {
+        return sigma_y;
+      }
+
+      double
+      hardening_modulus() const
+      {
+        return H;
+      }
+
+    private:
+      elasticity::IsotropicConstants constants;
+      double                         sigma_y = 1;
+      double                         H       = 0;
+    };
+  } // namespace materials
+} // namespace mpm

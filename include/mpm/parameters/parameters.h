@@ -1,0 +1,187 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+
+#include <mpm/materials/material.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+/**
+ * The parameter file, one struct per subsection. Each struct declares its
+ * entries (with documentation and defaults) and reads them back; the
+ * user guide in doc/parameters.md follows the same order.
+ */
+namespace mpm
+{
+  namespace Parameters
+  {
+    /// Background grid: a subdivided box or a mesh file.
+    template <int dim>
+    struct Grid
+    {
+      enum class Type
+      {
+        hyper_rectangle,
+        mesh_file
+      };
+      Type                      type = Type::hyper_rectangle;
+      dealii::Point<dim>        lower, upper;
+      std::vector<unsigned int> subdivisions;
+      std::string               mesh_file;
+      unsigned int              global_refinements = 0;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Time integration and the choice of the update scheme.
+    struct TimeStepping
+    {
+      enum class Scheme
+      {
+        usf,
+        usl,
+        musl
+      };
+      enum class StepControl
+      {
+        fixed,
+        cfl
+      };
+      Scheme      scheme        = Scheme::musl;
+      StepControl step_control  = StepControl::cfl;
+      double      end_time      = 1.0;
+      double      time_step     = 1e-3;
+      double      cfl_number    = 0.5;
+      double      flip_fraction = 1.0;
+      double      damping       = 0.0;
+      unsigned int max_steps    = 0;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// What happens at the grid boundary and to particles that leave it.
+    struct BoundaryConditions
+    {
+      std::vector<dealii::types::boundary_id> fixed, slip;
+      bool remove_lost_particles = false;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// One body: its geometry, particles, material and initial state.
+    template <int dim>
+    struct Body
+    {
+      enum class Geometry
+      {
+        box,
+        ball,
+        mesh_file
+      };
+      Geometry                  geometry = Geometry::box;
+      dealii::Point<dim>        lower, upper;
+      std::vector<unsigned int> subdivisions;
+      dealii::Point<dim>        center;
+      double                    radius      = 1.0;
+      unsigned int              refinements = 2;
+      std::string               mesh_file;
+      unsigned int              particles_per_direction = 2;
+
+      std::string initial_velocity;      // muparser, dim components
+      std::string initial_stress;        // muparser, Voigt components
+      std::string body_force;            // muparser of x, X and t
+      std::string traction;              // muparser of x, X and t
+      std::vector<dealii::types::boundary_id> traction_boundary_ids;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Where and how often results are written.
+    struct Output
+    {
+      std::string  directory       = "output";
+      double       interval        = 0.1;
+      bool         write_vtu       = true;
+      bool         write_csv       = true;
+      bool         write_grid      = true;
+      std::string  test_summary;
+      double       progress_interval = 10.0;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Everything in one place, read from one file.
+    template <int dim>
+    struct AllParameters
+    {
+      std::string             file_name;
+      unsigned int            n_bodies = 1;
+      KinematicAssumption     kinematics = KinematicAssumption::plane_strain;
+      Grid<dim>               grid;
+      TimeStepping            time;
+      BoundaryConditions      boundary;
+      std::vector<Body<dim>>  bodies;
+      Output                  output;
+      std::string             benchmark = "none";
+      std::map<std::string, double> constants;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm,
+                         const unsigned int        n_bodies);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Section name of body i ("Body 0", "Body 1", ...).
+    std::string
+    body_section(const unsigned int i);
+
+    /**
+     * Read `Dimension` and `Number of bodies` from a parameter file without
+     * declaring the rest, so that the full set can then be declared.
+     */
+    struct Preamble
+    {
+      unsigned int dimension = 2;
+      unsigned int n_bodies  = 1;
+    };
+    Preamble
+    read_preamble(const std::string &file_name);
+
+    /// Declare the two preamble entries (also part of the full set).
+    void
+    declare_preamble(dealii::ParameterHandler &prm);
+
+    /**
+     * Parse a parameter file with all entries declared; every failure
+     * (unknown entry, bad value, missing file) becomes an InputError that
+     * names the file and, where deal.II reports it, the line.
+     */
+    void
+    parse_file(dealii::ParameterHandler &prm, const std::string &file_name);
+
+    /// Parse "a, b, c" into points and numbers with a message on failure.
+    template <int dim>
+    dealii::Point<dim>
+    parse_point(const std::string &text, const std::string &entry);
+  } // namespace Parameters
+} // namespace mpm

@@ -1,0 +1,115 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/grid/tria.h>
+
+#include <mpm/materials/material.h>
+#include <mpm/parameters/parameters.h>
+#include <mpm/utilities/expression.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  /**
+   * A body at run time: its material and the expressions for its initial
+   * state and loads. Loads are functions of the current position x, the
+   * material coordinate X and time.
+   */
+  template <int dim>
+  struct Body
+  {
+    unsigned int                         index = 0;
+    Parameters::Body<dim>                prm;
+    std::unique_ptr<materials::Material> material;
+    Expression<dim>                      initial_velocity;
+    Expression<dim>                      initial_stress;
+    Expression<2 * dim>                  body_force;
+    Expression<2 * dim>                  traction;
+
+    /// Evaluate b(x, X, t) per unit mass.
+    void
+    body_force_at(const dealii::Point<dim> &x,
+                  const double *            X,
+                  const double              t,
+                  double *                  out) const
+    {
+      if (body_force.is_constant())
+        return body_force.value({}, t, out);
+      dealii::Point<2 * dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          p[d]       = x[d];
+          p[dim + d] = X[d];
+        }
+      body_force.value(p, t, out);
+    }
+
+    /// Evaluate the traction t(x, X, t).
+    void
+    traction_at(const dealii::Point<dim> &x,
+                const double *            X,
+                const double              t,
+                double *                  out) const
+    {
+      if (traction.is_constant())
+        return traction.value({}, t, out);
+      dealii::Point<2 * dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          p[d]       = x[d];
+          p[dim + d] = X[d];
+        }
+      traction.value(p, t, out);
+    }
+
+    bool
+    has_body_force() const;
+  };
+
+  /// Variable names of the spatial coordinates ("x,y") and with the
+  /// material coordinates ("x,y,X,Y").
+  std::string
+  spatial_variables(const int dim);
+  std::string
+  load_variables(const int dim);
+
+  /// The particle domain a body-mesh sub-cell gives: centre, volume, the
+  /// half-vectors of its parallelogram approximation and the area of the
+  /// body boundary it carries traction on.
+  template <int dim>
+  struct ParticleSeed
+  {
+    dealii::Point<dim>     position;
+    double                 volume        = 0;
+    dealii::Tensor<2, dim> domain;        // column i = half-vector r_i
+    double                 traction_area = 0;
+  };
+
+  /// Build the body mesh (box, ball or file) on every rank.
+  template <int dim>
+  void
+  create_body_mesh(dealii::Triangulation<dim> &     body_mesh,
+                   const Parameters::Body<dim> &    prm,
+                   const std::string &              input_folder,
+                   const std::string &              where);
+
+  /**
+   * Split body cells into n^dim sub-cells (in the cell's reference
+   * coordinates) and return one seed per sub-cell, for the cells
+   * first_cell, first_cell + stride, ... (so that ranks share the work).
+   * seed_ids receive cell_index * n^dim + sub-cell index.
+   */
+  template <int dim>
+  void
+  split_body_cells(const dealii::Triangulation<dim> &       body_mesh,
+                   const unsigned int                       n,
+                   const std::vector<dealii::types::boundary_id> &traction_ids,
+                   const unsigned int                       first_cell,
+                   const unsigned int                       stride,
+                   std::vector<ParticleSeed<dim>> &         seeds,
+                   std::vector<unsigned long long> &        seed_ids);
+} // namespace mpm

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <cmath>
+
+namespace mpm
+{
+  namespace shape_functions
+  {
+    using dealii::Point;
+    using dealii::Tensor;
+
+    /// Number of vertices (= Q1 shape functions) of a dim-cube.
+    template <int dim>
+    constexpr unsigned int n_q1 = 1u << dim;
+
+    /**
+     * Geometry of one Q1 background cell and direct evaluation of its
+     * shape functions at reference coordinates xi in [0,1]^dim (deal.II's
+     * convention and vertex order: vertex v has reference coordinate bit d
+     * of v in direction d).
+     *
+     * Axis-parallel boxes take a fast path (gradients are the reference
+     * gradients divided by the edge lengths). Every other cell uses the
+     * Jacobian at xi: grad N = J^-T grad_xi N with J = sum_v x_v (x)
+     * grad_xi N_v, which is exact for any non-degenerate Q1 cell.
+     */
+    template <int dim>
+    struct Q1Cell
+    {
+      static constexpr unsigned int n_vertices = n_q1<dim>;
+
+      std::array<Point<dim>, n_vertices> vertices;
+      bool                               is_box = false;
+      Tensor<1, dim>                     inverse_extent; // box only
+      Tensor<1, dim>                     extent;         // box only
+
+      /// Fill from vertex positions in deal.II order.
+      void
+      reinit(const std::array<Point<dim>, n_vertices> &v, const double tol)
+      {
+        vertices = v;
+        is_box   = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            extent[d]         = v[n_vertices - 1][d] - v[0][d];
+            inverse_extent[d] = 1. / extent[d];
+          }
+        for (unsigned int i = 0; i < n_vertices; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double expected =
+                v[0][d] + (((i >> d) & 1) ? extent[d] : 0.);
+              if (std::abs(v[i][d] - expected) > tol)
+                is_box = false;
+            }
+      }
+
+      /// Shape function values at xi.
+      static void
+      values(const Point<dim> &xi, double *N)
+      {
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            double n = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+              n *= ((v >> d) & 1) ? xi[d] : 1. - xi[d];
+            N[v] = n;
+          }
+      }
+
+      /// Gradients with respect to xi.
+      static void
+      reference_gradients(const Point<dim> &xi, Tensor<1, dim> *dN)
+      {
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              double g = ((v >> d) & 1) ? 1. : -1.;
+              for (unsigned int e = 0; e < dim; ++e)
+                if (e != d)
+                  g *= ((v >> e) & 1) ? xi[e] : 1. - xi[e];
+              dN[v][d] = g;
+            }
+      }
+
+      /// Jacobian dx/dxi at xi.
+      Tensor<2, dim>
+      jacobian(const Point<dim> &xi) const
+      {
+        Tensor<1, dim> dN[n_vertices];
+        reference_gradients(xi, dN);
+        Tensor<2, dim> J;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              J[i][j] += vertices[v][i] * dN[v][j];
+        return J;
+      }
+
+      /// Values and physical gradients at xi.
+      void
+      values_and_gradients(const Point<dim> &xi,
+                           double *          N,
+                           Tensor<1, dim> *  grad) const
+      {
+        values(xi, N);
+        reference_gradients(xi, grad);
+        if (is_box)
+          {
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              for (unsigned int d = 0; d < dim; ++d)
+                grad[v][d] *= inverse_extent[d];
+          }
+        else
+          {
+            const Tensor<2, dim> JinvT =
+              dealii::transpose(dealii::invert(jacobian(xi)));
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              grad[v] = JinvT * grad[v];
+          }
+      }
+
+      /// Position of the reference point xi.
+      Point<dim>
+      map(const Point<dim> &xi) const
+      {
+        double N[n_vertices];
+        values(xi, N);
+        Point<dim> x;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          x += N[v] * vertices[v];
+        return x;
+      }
+    };
+  } // namespace shape_functions
+} // namespace mpm

@@ -1,0 +1,155 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <mpm/benchmarks/benchmark.h>
+#include <mpm/grid/background_grid.h>
+#include <mpm/io/output_writer.h>
+#include <mpm/io/statistics.h>
+#include <mpm/parameters/parameters.h>
+#include <mpm/particles/body.h>
+#include <mpm/particles/particle_layout.h>
+#include <mpm/transfer/particle_to_grid.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  /**
+   * The explicit MPM solver. setup() builds everything from the parameters
+   * and checks it (every problem is an InputError, raised before anything
+   * is written); run() advances in time and writes results.
+   *
+   * One step (do_time_step) reads as the algorithm:
+   *   P2G -> grid update -> G2P -> [MUSL re-map] -> stress update ->
+   *   position update (sorting particles into cells),
+   * with the stress update before the force computation for USF.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    Simulator(const Parameters::AllParameters<dim> &parameters,
+              dealii::ParameterHandler &            prm,
+              const MPI_Comm                        comm);
+
+    /// Build grid, bodies and particles; check stability. Collective.
+    void
+    setup();
+
+    /// The time loop with output. Collective.
+    void
+    run();
+
+    /// Advance by one step of length dt (the phases below).
+    void
+    do_time_step(const double dt);
+
+    double
+    time() const
+    {
+      return current_time;
+    }
+    unsigned int
+    step() const
+    {
+      return current_step;
+    }
+    /// Stable step of the current state (collective min).
+    double
+    stable_time_step();
+
+    /// Global sums of the current state. Collective.
+    GlobalStatistics<dim>
+    statistics();
+
+    /// Benchmark error columns of the current state (empty if none).
+    std::vector<double>
+    benchmark_values();
+
+    dealii::Particles::ParticleHandler<dim> &
+    particles()
+    {
+      return particle_handler;
+    }
+    const BackgroundGrid<dim> &
+    grid() const
+    {
+      return background;
+    }
+    const std::vector<Body<dim>> &
+    get_bodies() const
+    {
+      return bodies;
+    }
+
+  private:
+    // The phases of one step.
+    void
+    particle_to_grid(const transfer::P2GContent content);
+    void
+    update_grid(const double dt);
+    void
+    grid_to_particle(const double dt);
+    void
+    remap_momentum();
+    void
+    update_stress(const double dt);
+    void
+    update_positions();
+
+    // Set-up pieces.
+    void
+    create_bodies();
+    void
+    create_particles();
+
+    // Output pieces.
+    void
+    write_output();
+    void
+    print_header();
+    void
+    print_progress(const bool force);
+
+    /// Throw the same RuntimeError on every rank if any rank found one.
+    void
+    check_errors();
+
+    const Parameters::AllParameters<dim> &params;
+    dealii::ParameterHandler &            prm;
+    MPI_Comm                              comm;
+    dealii::ConditionalOStream            pcout;
+    dealii::TimerOutput                   timer;
+    std::string                           input_folder;
+
+    BackgroundGrid<dim>                     background;
+    dealii::Particles::ParticleHandler<dim> particle_handler;
+    ParticleLayout<dim>                     layout;
+    std::vector<Body<dim>>                  bodies;
+    std::vector<std::string>                history_names;
+    std::unique_ptr<benchmarks::Benchmark<dim>> benchmark;
+
+    NodalVector p2g, kinematics, remap;
+    double      min_nodal_mass = 0;
+
+    double       current_time = 0;
+    unsigned int current_step = 0;
+    double       last_dt      = 0;
+    double       stable_dt    = 0; ///< from the last stress update (local)
+    double       removed_mass = 0; ///< local
+    std::string  local_error;      ///< first problem found on this rank
+    std::vector<std::string> lost_messages;
+
+    std::unique_ptr<OutputWriter<dim>>   writer;
+    std::unique_ptr<StatisticsFile<dim>> statistics_file;
+    std::vector<std::string>             summary_rows;
+    double                               next_output_time = 0;
+    double                               wall_start = 0, last_progress = 0;
+  };
+} // namespace mpm

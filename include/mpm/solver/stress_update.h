@@ -1,0 +1,42 @@
+#pragma once
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <mpm/grid/background_grid.h>
+#include <mpm/particles/body.h>
+
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  /// What the stress update learns about the state on the way.
+  struct StressUpdateResult
+  {
+    /// min_p h_cell / (c_p + |v_p|): the stability limit of the next step
+    double      stable_time_step = std::numeric_limits<double>::max();
+    std::string error; ///< first non-finite particle, if any
+  };
+
+  /**
+   * Stress update of every owned particle: the velocity gradient
+   * L_p = sum_i v_i (x) grad N_ip from the nodal velocities in
+   * @p kinematics (KinematicsLayout), F_p <- (I + dt L_p) F_p,
+   * V_p = det(F_p) V0_p, and the material's stress update. Also measures
+   * the stable time step of the new state.
+   */
+  template <int dim>
+  StressUpdateResult
+  update_stress(const BackgroundGrid<dim> &              grid,
+                dealii::Particles::ParticleHandler<dim> &particles,
+                const std::vector<Body<dim>> &          bodies,
+                const NodalVector &                     kinematics,
+                const double                            dt);
+
+  /// The stability limit of the current state (no update).
+  template <int dim>
+  double
+  stable_time_step(const BackgroundGrid<dim> &              grid,
+                   dealii::Particles::ParticleHandler<dim> &particles,
+                   const std::vector<Body<dim>> &          bodies);
+} // namespace mpm

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <mpm/grid/background_grid.h>
+#include <mpm/particles/body.h>
+
+#include <vector>
+
+namespace mpm
+{
+  namespace transfer
+  {
+    /// What a particle-to-grid pass accumulates.
+    enum class P2GContent
+    {
+      mass_momentum_force, ///< USL and MUSL: everything in one pass
+      mass_momentum,       ///< USF, first pass
+      force,               ///< USF, second pass (after the stress update)
+      momentum             ///< MUSL re-map of the updated particle momentum
+    };
+
+    /// Components per node of the P2G vector: mass, momentum (dim),
+    /// force (dim). Offsets of each part.
+    template <int dim>
+    struct P2GLayout
+    {
+      static constexpr unsigned int mass         = 0;
+      static constexpr unsigned int momentum     = 1;
+      static constexpr unsigned int force        = 1 + dim;
+      static constexpr unsigned int n_components = 1 + 2 * dim;
+    };
+
+    /**
+     * Particle to grid: m_i = sum_p N_ip m_p, (mv)_i = sum_p N_ip m_p v_p,
+     * f_i = sum_p [ -V_p sigma_p grad N_ip + N_ip (m_p b_p + A_p t_p) ].
+     * Walks the particles cell by cell with Q1 values computed directly,
+     * adds into the ghosted vector @p nodal (packed with P2GLayout, or
+     * with dim components for P2GContent::momentum) and compresses it.
+     */
+    template <int dim>
+    void
+    particle_to_grid(const BackgroundGrid<dim> &             grid,
+                     dealii::Particles::ParticleHandler<dim> &particles,
+                     const std::vector<Body<dim>> &          bodies,
+                     const double                            time,
+                     const P2GContent                        content,
+                     NodalVector &                           nodal);
+  } // namespace transfer
+} // namespace mpm

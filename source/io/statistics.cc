@@ -1,0 +1,127 @@
+#include <deal.II/base/mpi.h>
+
+#include <mpm/io/statistics.h>
+#include <mpm/particles/particle_layout.h>
+
+#include <iomanip>
+
+namespace mpm
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  GlobalStatistics<dim>::compute(Particles::ParticleHandler<dim> &particles,
+                                 const std::vector<Body<dim>> &   bodies,
+                                 const MPI_Comm                   comm)
+  {
+    using L = ParticleLayout<dim>;
+    // Local sums in one array, reduced with one collective call.
+    constexpr unsigned int n = 4 + dim + 3;
+    double                 local[n] = {};
+    for (const auto &p : particles)
+      {
+        const double *prop = p.get_properties().data();
+        const double  m    = prop[L::mass];
+        const auto   &mat  = *bodies[static_cast<unsigned int>(prop[L::body])].material;
+        double        v2   = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            v2 += prop[L::velocity + d] * prop[L::velocity + d];
+            local[4 + d] += m * prop[L::velocity + d];
+          }
+        local[0] += 1;
+        local[1] += m;
+        local[2] += 0.5 * m * v2;
+        local[3] += prop[L::volume0] *
+                    mat.strain_energy_density(
+                      load_stress(prop + L::stress),
+                      embed<dim>(load_matrix<dim>(prop + L::F), 1.),
+                      ArrayView<const double>(prop + L::history, mat.n_history()));
+        Tensor<1, 3> x, v;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            x[d] = p.get_location()[d];
+            v[d] = prop[L::velocity + d];
+          }
+        const Tensor<1, 3> h = m * cross_product_3d(x, v);
+        for (unsigned int d = 0; d < 3; ++d)
+          local[4 + dim + d] += h[d];
+      }
+    double global[n];
+    Utilities::MPI::sum(ArrayView<const double>(local, n), comm,
+                        ArrayView<double>(global, n));
+    n_particles    = static_cast<unsigned long long>(global[0] + 0.5);
+    mass           = global[1];
+    kinetic_energy = global[2];
+    strain_energy  = global[3];
+    for (unsigned int d = 0; d < dim; ++d)
+      momentum[d] = global[4 + d];
+    for (unsigned int d = 0; d < 3; ++d)
+      angular_momentum[d] = global[4 + dim + d];
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  StatisticsFile<dim>::column_names(const std::vector<std::string> &extra)
+  {
+    const char *axis[3] = {"x", "y", "z"};
+    std::vector<std::string> c = {"time", "step", "dt", "n_particles",
+                                  "mass", "removed_mass", "kinetic_energy",
+                                  "strain_energy", "total_energy"};
+    for (unsigned int d = 0; d < dim; ++d)
+      c.push_back(std::string("momentum_") + axis[d]);
+    if (dim == 2)
+      c.push_back("angular_momentum_z");
+    if (dim == 3)
+      for (unsigned int d = 0; d < 3; ++d)
+        c.push_back(std::string("angular_momentum_") + axis[d]);
+    c.insert(c.end(), extra.begin(), extra.end());
+    return c;
+  }
+
+  template <int dim>
+  void
+  StatisticsFile<dim>::open(const std::string &             file_name,
+                            const std::vector<std::string> &extra)
+  {
+    out.open(file_name);
+    out << "#";
+    for (const auto &c : column_names(extra))
+      out << ' ' << c;
+    out << '\n' << std::flush;
+  }
+
+  template <int dim>
+  void
+  StatisticsFile<dim>::write_row(const double                 time,
+                                 const unsigned int           step,
+                                 const double                 dt,
+                                 const GlobalStatistics<dim> &s,
+                                 const std::vector<double> &  extra)
+  {
+    if (!out.is_open())
+      return;
+    out << std::setprecision(12) << time << ' ' << step << ' ' << dt << ' '
+        << s.n_particles << ' ' << s.mass << ' ' << s.removed_mass << ' '
+        << s.kinetic_energy << ' ' << s.strain_energy << ' '
+        << s.kinetic_energy + s.strain_energy;
+    for (unsigned int d = 0; d < dim; ++d)
+      out << ' ' << s.momentum[d];
+    if (dim == 2)
+      out << ' ' << s.angular_momentum[2];
+    if (dim == 3)
+      for (unsigned int d = 0; d < 3; ++d)
+        out << ' ' << s.angular_momentum[d];
+    for (const double e : extra)
+      out << ' ' << e;
+    out << '\n' << std::flush;
+  }
+
+  template struct GlobalStatistics<1>;
+  template struct GlobalStatistics<2>;
+  template struct GlobalStatistics<3>;
+  template class StatisticsFile<1>;
+  template class StatisticsFile<2>;
+  template class StatisticsFile<3>;
+} // namespace mpm

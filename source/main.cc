@@ -1,0 +1,158 @@
+// The mpm application: read `set Dimension` from the parameter file, then
+// build and run Simulator<dim>. Every error the user can fix ends with one
+// message and a non-zero exit status.
+
+#include <deal.II/base/mpi.h>
+
+#include <mpm/parameters/parameters.h>
+#include <mpm/solver/simulator.h>
+#include <mpm/utilities/input_error.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+  const char *usage =
+    "Usage: mpm [options] FILE.prm\n"
+    "       mpirun -np N mpm FILE.prm\n"
+    "\n"
+    "Explicit material point method on a deal.II Q1 grid.\n"
+    "\n"
+    "Options:\n"
+    "  -h, --help                 this text\n"
+    "  --validate FILE.prm        read and set up the case (grid, bodies,\n"
+    "                             particles, stability check), then stop\n"
+    "                             without writing anything\n"
+    "  --print-parameters [DIM]   print every parameter with its default\n"
+    "                             and documentation (DIM = 1, 2 or 3;\n"
+    "                             default 2), in parameter-file syntax\n"
+    "\n"
+    "Documentation: doc/parameters.md (every subsection), doc/theory.md.\n";
+
+  template <int dim>
+  void
+  run(const std::string &file, const unsigned int n_bodies, const bool validate)
+  {
+    dealii::ParameterHandler prm;
+    mpm::Parameters::AllParameters<dim>::declare_parameters(prm, n_bodies);
+    mpm::Parameters::parse_file(prm, file);
+    mpm::Parameters::AllParameters<dim> parameters;
+    parameters.file_name = file;
+    parameters.parse_parameters(prm);
+    mpm::Simulator<dim> simulator(parameters, prm, MPI_COMM_WORLD);
+    simulator.setup();
+    if (validate)
+      {
+        if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          std::cout << "mpm: " << file << " is valid ("
+                    << simulator.particles().n_global_particles()
+                    << " particles)" << std::endl;
+        return;
+      }
+    simulator.run();
+  }
+
+  template <int dim>
+  void
+  print_parameters()
+  {
+    dealii::ParameterHandler prm;
+    mpm::Parameters::AllParameters<dim>::declare_parameters(prm, 1);
+    prm.set("Dimension", std::to_string(dim));
+    prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+  std::string file;
+  bool        validate = false;
+  for (int i = 1; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      if (a == "-h" || a == "--help")
+        {
+          if (root)
+            std::cout << usage;
+          return 0;
+        }
+      else if (a == "--print-parameters")
+        {
+          const std::string d = (i + 1 < argc) ? argv[i + 1] : "2";
+          if (root)
+            {
+              if (d == "1")
+                print_parameters<1>();
+              else if (d == "3")
+                print_parameters<3>();
+              else
+                print_parameters<2>();
+            }
+          return 0;
+        }
+      else if (a == "--validate")
+        validate = true;
+      else if (!a.empty() && a[0] == '-')
+        {
+          if (root)
+            std::cerr << "mpm: unknown option '" << a << "'\n\n" << usage;
+          return 1;
+        }
+      else if (file.empty())
+        file = a;
+      else
+        {
+          if (root)
+            std::cerr << "mpm: more than one parameter file given\n";
+          return 1;
+        }
+    }
+  if (file.empty())
+    {
+      if (root)
+        std::cerr << usage;
+      return 1;
+    }
+
+  try
+    {
+      const auto pre = mpm::Parameters::read_preamble(file);
+      switch (pre.dimension)
+        {
+          case 1:
+            run<1>(file, pre.n_bodies, validate);
+            break;
+          case 2:
+            run<2>(file, pre.n_bodies, validate);
+            break;
+          default:
+            run<3>(file, pre.n_bodies, validate);
+        }
+    }
+  catch (const mpm::InputError &e)
+    {
+      if (root)
+        std::cerr << "mpm: error: " << e.what()
+                  << "\nNothing was written." << std::endl;
+      return 1;
+    }
+  catch (const mpm::RuntimeError &e)
+    {
+      if (root)
+        std::cerr << "mpm: the simulation stopped " << e.what()
+                  << "\nOutput written before this point is kept." << std::endl;
+      return 2;
+    }
+  catch (const std::exception &e)
+    {
+      if (root)
+        std::cerr << "mpm: internal error: " << e.what() << std::endl;
+      return 3;
+    }
+  return 0;
+}

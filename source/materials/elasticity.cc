@@ -1,0 +1,204 @@
+#include <mpm/materials/elasticity.h>
+#include <mpm/utilities/input_error.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace mpm
+{
+  namespace materials
+  {
+    namespace elasticity
+    {
+      using dealii::SymmetricTensor;
+      using dealii::Tensor;
+
+      double
+      IsotropicConstants::lambda() const
+      {
+        return youngs_modulus * poissons_ratio /
+               ((1 + poissons_ratio) * (1 - 2 * poissons_ratio));
+      }
+
+
+
+      double
+      IsotropicConstants::mu() const
+      {
+        return youngs_modulus / (2 * (1 + poissons_ratio));
+      }
+
+
+
+      double
+      IsotropicConstants::bulk_modulus() const
+      {
+        return youngs_modulus / (3 * (1 - 2 * poissons_ratio));
+      }
+
+
+
+      double
+      IsotropicConstants::p_wave_modulus(const KinematicAssumption k) const
+      {
+        switch (k)
+          {
+            case KinematicAssumption::plane_stress:
+              return youngs_modulus / (1 - poissons_ratio * poissons_ratio);
+            case KinematicAssumption::uniaxial_stress:
+              return youngs_modulus;
+            default:
+              return lambda() + 2 * mu();
+          }
+      }
+
+
+
+      void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        // Ranges are checked in parse_parameters() so that every violation
+        // produces the same kind of message.
+        prm.declare_entry("Young's modulus",
+                          "1e6",
+                          dealii::Patterns::Double(),
+                          "Young's modulus E [Pa]. Must be positive.");
+        prm.declare_entry("Poisson's ratio",
+                          "0.3",
+                          dealii::Patterns::Double(),
+                          "Poisson's ratio nu [-], in [0, 0.5).");
+      }
+
+
+
+      IsotropicConstants
+      parse_parameters(dealii::ParameterHandler &prm)
+      {
+        IsotropicConstants c;
+        c.youngs_modulus = prm.get_double("Young's modulus");
+        c.poissons_ratio = prm.get_double("Poisson's ratio");
+        if (!(c.youngs_modulus > 0) || !std::isfinite(c.youngs_modulus))
+          throw InputError("Young's modulus = " + prm.get("Young's modulus") +
+                           " must be positive");
+        if (!(c.poissons_ratio >= 0 && c.poissons_ratio < 0.5))
+          throw InputError("Poisson's ratio = " + prm.get("Poisson's ratio") +
+                           " is out of range [0, 0.5)");
+        return c;
+      }
+
+
+
+      SymmetricTensor<2, 3>
+      stress_increment(const IsotropicConstants    &c,
+                       const SymmetricTensor<2, 3> &d_eps,
+                       const KinematicAssumption    k)
+      {
+        const double          mu = c.mu();
+        SymmetricTensor<2, 3> d_sigma;
+        switch (k)
+          {
+            case KinematicAssumption::plane_stress:
+              {
+                // Eliminating eps_zz with sigma_zz = 0 gives the in-plane
+                // law with a reduced lambda.
+                const double lambda      = c.lambda();
+                const double lambda_star = 2 * lambda * mu / (lambda + 2 * mu);
+                const double trace_2d    = d_eps[0][0] + d_eps[1][1];
+                for (unsigned int i = 0; i < 2; ++i)
+                  for (unsigned int j = i; j < 2; ++j)
+                    d_sigma[i][j] = 2 * mu * d_eps[i][j];
+                d_sigma[0][0] += lambda_star * trace_2d;
+                d_sigma[1][1] += lambda_star * trace_2d;
+                break;
+              }
+            case KinematicAssumption::uniaxial_stress:
+              d_sigma[0][0] = c.youngs_modulus * d_eps[0][0];
+              break;
+            default:
+              // 3D, plane strain and uniaxial strain: the constrained
+              // strains are zero in d_eps, the stresses follow from the
+              // full law.
+              d_sigma = c.lambda() * dealii::trace(d_eps) *
+                          dealii::unit_symmetric_tensor<3>() +
+                        2 * mu * d_eps;
+          }
+        return d_sigma;
+      }
+
+
+
+      double
+      complementary_energy(const IsotropicConstants    &c,
+                           const SymmetricTensor<2, 3> &stress)
+      {
+        const double nu = c.poissons_ratio;
+        const double tr = dealii::trace(stress);
+        return ((1 + nu) * (stress * stress) - nu * tr * tr) /
+               (2 * c.youngs_modulus);
+      }
+
+
+
+      Tensor<2, 3>
+      hughes_winget_rotation(const Tensor<2, 3> &velocity_gradient,
+                             const double        dt)
+      {
+        const Tensor<2, 3> half_spin =
+          0.25 * dt *
+          (velocity_gradient - dealii::transpose(velocity_gradient));
+        const Tensor<2, 3> identity = dealii::unit_symmetric_tensor<3>();
+        return dealii::invert(identity - half_spin) * (identity + half_spin);
+      }
+
+
+
+      SymmetricTensor<2, 3>
+      rotate(const SymmetricTensor<2, 3> &stress, const Tensor<2, 3> &R)
+      {
+        const Tensor<2, 3> rotated =
+          R * Tensor<2, 3>(stress) * dealii::transpose(R);
+        // Symmetric up to round-off; averaging keeps it exactly symmetric.
+        return dealii::symmetrize(rotated);
+      }
+
+
+
+      void
+      zero_constrained_components(SymmetricTensor<2, 3>    &stress,
+                                  const KinematicAssumption k)
+      {
+        switch (k)
+          {
+            case KinematicAssumption::plane_stress:
+              stress[2][2] = 0;
+              stress[0][2] = 0;
+              stress[1][2] = 0;
+              break;
+            case KinematicAssumption::uniaxial_stress:
+              {
+                const double sigma_xx = stress[0][0];
+                stress                = 0;
+                stress[0][0]          = sigma_xx;
+                break;
+              }
+            default:
+              break;
+          }
+      }
+
+
+
+      void
+      hypoelastic_update(const IsotropicConstants &c,
+                         const PointKinematics    &kinematics,
+                         const KinematicAssumption k,
+                         SymmetricTensor<2, 3>    &stress)
+      {
+        const Tensor<2, 3> &L = kinematics.velocity_gradient;
+        stress = rotate(stress, hughes_winget_rotation(L, kinematics.dt));
+        stress += stress_increment(c, kinematics.dt * dealii::symmetrize(L), k);
+        zero_constrained_components(stress, k);
+      }
+    } // namespace elasticity
+  }   // namespace materials
+} // namespace mpm

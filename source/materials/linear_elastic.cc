@@ -1,0 +1,85 @@
+#include <mpm/materials/linear_elastic.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mpm
+{
+  namespace materials
+  {
+    void
+    LinearElastic::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      elasticity::declare_parameters(prm);
+    }
+
+
+
+    std::string
+    LinearElastic::name() const
+    {
+      return "linear elastic";
+    }
+
+
+
+    bool
+    LinearElastic::supports(const KinematicAssumption) const
+    {
+      return true;
+    }
+
+
+
+    void
+    LinearElastic::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      constants = elasticity::parse_parameters(prm);
+    }
+
+
+
+    void
+    LinearElastic::update_stress(const PointKinematics &point,
+                                 SymmetricTensor<2, 3> &stress,
+                                 const ArrayView<double> &) const
+    {
+      elasticity::hypoelastic_update(constants,
+                                     point,
+                                     kinematic_assumption(),
+                                     stress);
+    }
+
+
+
+    double
+    LinearElastic::strain_energy_density(const SymmetricTensor<2, 3> &stress,
+                                         const Tensor<2, 3>          &F,
+                                         const ArrayView<const double> &) const
+    {
+      return dealii::determinant(F) *
+             elasticity::complementary_energy(constants, stress);
+    }
+
+
+
+    double
+    LinearElastic::wave_speed(const Tensor<2, 3> &F) const
+    {
+      // The moduli are constant per current volume, so c^2 = M / rho with
+      // rho = rho0 / J. Compression is not allowed to lower the estimate
+      // (the stress adds to the acoustic tensor, and a smaller speed only
+      // saves little time).
+      const double J = dealii::determinant(F);
+      return std::sqrt(constants.p_wave_modulus(kinematic_assumption()) *
+                       std::max(J, 1.0) / density);
+    }
+  } // namespace materials
+} // namespace mpm
+
+using mpm::materials::LinearElastic;
+MPM_REGISTER_MATERIAL(LinearElastic,
+                      "linear elastic",
+                      "Isotropic hypoelastic material (Jaumann rate, "
+                      "Hughes-Winget update); linear elasticity for small "
+                      "strains.")

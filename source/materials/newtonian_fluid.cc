@@ -1,0 +1,149 @@
+#include <mpm/materials/newtonian_fluid.h>
+#include <mpm/utilities/input_error.h>
+
+#include <cmath>
+
+namespace mpm
+{
+  namespace materials
+  {
+    namespace
+    {
+      double
+      jacobian(const Tensor<2, 3> &F)
+      {
+        const double J = dealii::determinant(F);
+        if (!(J > 0))
+          throw RuntimeError("Newtonian fluid: det F = " + std::to_string(J) +
+                             " is not positive");
+        return J;
+      }
+    } // namespace
+
+
+
+    void
+    NewtonianFluid::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      // Ranges are checked in parse_parameters().
+      prm.declare_entry("Viscosity",
+                        "1e-3",
+                        dealii::Patterns::Double(),
+                        "Dynamic (shear) viscosity mu [Pa s]. Must be "
+                        "non-negative.");
+      prm.declare_entry("Equation of state",
+                        "linear",
+                        dealii::Patterns::Selection("linear|Tait"),
+                        "Pressure as a function of J = det F = rho0/rho: "
+                        "'linear': p = K (1/J - 1); "
+                        "'Tait': p = K/gamma (J^-gamma - 1).");
+      prm.declare_entry("Bulk modulus",
+                        "2.2e9",
+                        dealii::Patterns::Double(),
+                        "Bulk modulus K at the reference density [Pa]. Must "
+                        "be positive.");
+      prm.declare_entry("Tait exponent",
+                        "7",
+                        dealii::Patterns::Double(),
+                        "Exponent gamma of the Tait equation of state [-], "
+                        ">= 1. Not used by the linear law.");
+    }
+
+
+
+    std::string
+    NewtonianFluid::name() const
+    {
+      return "Newtonian fluid";
+    }
+
+
+
+    bool
+    NewtonianFluid::supports(const KinematicAssumption k) const
+    {
+      // Plane stress / uniaxial stress make no sense for a fluid.
+      return k == KinematicAssumption::three_dimensional ||
+             k == KinematicAssumption::plane_strain ||
+             k == KinematicAssumption::uniaxial_strain;
+    }
+
+
+
+    void
+    NewtonianFluid::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      mu    = prm.get_double("Viscosity");
+      eos   = prm.get("Equation of state") == "Tait" ? EquationOfState::tait :
+                                                       EquationOfState::linear;
+      K     = prm.get_double("Bulk modulus");
+      gamma = prm.get_double("Tait exponent");
+
+      if (!(mu >= 0) || !std::isfinite(mu))
+        throw InputError("Viscosity = " + prm.get("Viscosity") +
+                         " must be non-negative");
+      if (!(K > 0) || !std::isfinite(K))
+        throw InputError("Bulk modulus = " + prm.get("Bulk modulus") +
+                         " must be positive");
+      if (!(gamma >= 1) || !std::isfinite(gamma))
+        throw InputError("Tait exponent = " + prm.get("Tait exponent") +
+                         " must be >= 1");
+    }
+
+
+
+    double
+    NewtonianFluid::pressure(const double J) const
+    {
+      if (eos == EquationOfState::linear)
+        return K * (1 / J - 1);
+      // expm1 keeps the relative accuracy for J close to one.
+      return K / gamma * std::expm1(-gamma * std::log(J));
+    }
+
+
+
+    void
+    NewtonianFluid::update_stress(const PointKinematics &point,
+                                  SymmetricTensor<2, 3> &stress,
+                                  const ArrayView<double> &) const
+    {
+      const double J = jacobian(point.F);
+      stress =
+        -pressure(J) * dealii::unit_symmetric_tensor<3>() +
+        2 * mu * dealii::deviator(dealii::symmetrize(point.velocity_gradient));
+    }
+
+
+
+    double
+    NewtonianFluid::strain_energy_density(const SymmetricTensor<2, 3> &,
+                                          const Tensor<2, 3> &F,
+                                          const ArrayView<const double> &) const
+    {
+      const double J = jacobian(F);
+      // For gamma = 1 the Tait law is the linear law; the general formula
+      // would divide by zero.
+      if (eos == EquationOfState::linear || gamma == 1)
+        return K * (J - 1 - std::log(J));
+      return K / gamma *
+             ((J - 1) - std::expm1((1 - gamma) * std::log(J)) / (1 - gamma));
+    }
+
+
+
+    double
+    NewtonianFluid::wave_speed(const Tensor<2, 3> &F) const
+    {
+      // rho = rho0 / J, so dp/drho = K/rho0 J^(1-gamma).
+      const double J = jacobian(F);
+      return std::sqrt(K / density * std::pow(J, 1 - exponent()));
+    }
+  } // namespace materials
+} // namespace mpm
+
+using mpm::materials::NewtonianFluid;
+MPM_REGISTER_MATERIAL(NewtonianFluid,
+                      "Newtonian fluid",
+                      "Compressible Newtonian fluid with a linear or Tait "
+                      "equation of state.")

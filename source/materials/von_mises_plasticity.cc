@@ -1,0 +1,150 @@
+#include <mpm/materials/von_mises_plasticity.h>
+#include <mpm/utilities/input_error.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mpm
+{
+  namespace materials
+  {
+    void
+    VonMisesPlasticity::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      elasticity::declare_parameters(prm);
+      prm.declare_entry("Yield stress",
+                        "1e6",
+                        dealii::Patterns::Double(),
+                        "Initial uniaxial yield stress sigma_y [Pa]. Must "
+                        "be positive.");
+      prm.declare_entry("Hardening modulus",
+                        "0",
+                        dealii::Patterns::Double(),
+                        "Linear isotropic hardening modulus H [Pa]: the "
+                        "yield stress is sigma_y + H alpha. Must be "
+                        "non-negative; 0 is perfect plasticity.");
+    }
+
+
+
+    std::string
+    VonMisesPlasticity::name() const
+    {
+      return "von Mises plasticity";
+    }
+
+
+
+    bool
+    VonMisesPlasticity::supports(const KinematicAssumption k) const
+    {
+      // Plane stress and uniaxial stress need a constrained return mapping.
+      return k == KinematicAssumption::three_dimensional ||
+             k == KinematicAssumption::plane_strain ||
+             k == KinematicAssumption::uniaxial_strain;
+    }
+
+
+
+    void
+    VonMisesPlasticity::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      constants = elasticity::parse_parameters(prm);
+      sigma_y   = prm.get_double("Yield stress");
+      H         = prm.get_double("Hardening modulus");
+      if (!(sigma_y > 0) || !std::isfinite(sigma_y))
+        throw InputError("Yield stress = " + prm.get("Yield stress") +
+                         " must be positive");
+      if (!(H >= 0) || !std::isfinite(H))
+        throw InputError("Hardening modulus = " + prm.get("Hardening modulus") +
+                         " must be non-negative");
+    }
+
+
+
+    unsigned int
+    VonMisesPlasticity::n_history() const
+    {
+      return 1;
+    }
+
+
+
+    std::vector<std::string>
+    VonMisesPlasticity::history_names() const
+    {
+      return {"equivalent plastic strain"};
+    }
+
+
+
+    double
+    VonMisesPlasticity::yield_function(const SymmetricTensor<2, 3> &stress,
+                                       const double                 alpha) const
+    {
+      return dealii::deviator(stress).norm() -
+             std::sqrt(2. / 3.) * (sigma_y + H * alpha);
+    }
+
+
+
+    void
+    VonMisesPlasticity::update_stress(const PointKinematics   &point,
+                                      SymmetricTensor<2, 3>   &stress,
+                                      const ArrayView<double> &history) const
+    {
+      AssertDimension(history.size(), 1);
+      double &alpha = history[0];
+
+      // Elastic trial state.
+      elasticity::hypoelastic_update(constants,
+                                     point,
+                                     kinematic_assumption(),
+                                     stress);
+
+      const double f = yield_function(stress, alpha);
+      if (f <= 0)
+        return;
+
+      // Radial return; with linear hardening the consistency condition is
+      // linear in the multiplier, so this is exact.
+      const double                mu      = constants.mu();
+      const SymmetricTensor<2, 3> s       = dealii::deviator(stress);
+      const SymmetricTensor<2, 3> n       = s / s.norm();
+      const double                d_gamma = f / (2 * mu + 2. / 3. * H);
+      stress -= 2 * mu * d_gamma * n;
+      alpha += std::sqrt(2. / 3.) * d_gamma;
+    }
+
+
+
+    double
+    VonMisesPlasticity::strain_energy_density(
+      const SymmetricTensor<2, 3> &stress,
+      const Tensor<2, 3>          &F,
+      const ArrayView<const double> &) const
+    {
+      return dealii::determinant(F) *
+             elasticity::complementary_energy(constants, stress);
+    }
+
+
+
+    double
+    VonMisesPlasticity::wave_speed(const Tensor<2, 3> &F) const
+    {
+      // Plastic flow only softens; the elastic speed bounds it.
+      const double J = dealii::determinant(F);
+      return std::sqrt(constants.p_wave_modulus(kinematic_assumption()) *
+                       std::max(J, 1.0) / density);
+    }
+  } // namespace materials
+} // namespace mpm
+
+using mpm::materials::VonMisesPlasticity;
+MPM_REGISTER_MATERIAL(VonMisesPlasticity,
+                      "von Mises plasticity",
+                      "Hypoelastic-plastic material with a von Mises yield "
+                      "surface and linear isotropic hardening.")

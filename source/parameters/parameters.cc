@@ -1,0 +1,595 @@
+#include <deal.II/base/patterns.h>
+#include <deal.II/base/utilities.h>
+
+#include <mpm/parameters/parameters.h>
+#include <mpm/utilities/expression.h>
+#include <mpm/utilities/input_error.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace mpm
+{
+  namespace Parameters
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      std::string
+      default_point(const int dim, const double value)
+      {
+        std::string s;
+        for (int d = 0; d < dim; ++d)
+          s += (d ? ", " : "") + Utilities::to_string(value);
+        return s;
+      }
+
+      std::vector<unsigned int>
+      parse_unsigned_list(const std::string &text,
+                          const unsigned int n,
+                          const std::string &entry)
+      {
+        const auto parts = Utilities::split_string_list(text, ',');
+        if (parts.size() != n && parts.size() != 1)
+          throw InputError("Parameter '" + entry + "' = '" + text +
+                           "': expected 1 or " + std::to_string(n) +
+                           " comma-separated integers");
+        std::vector<unsigned int> out;
+        for (const auto &p : parts)
+          {
+            const int v = Utilities::string_to_int(p);
+            if (v <= 0)
+              throw InputError("Parameter '" + entry + "' = '" + text +
+                               "': entries must be positive integers");
+            out.push_back(v);
+          }
+        if (out.size() == 1)
+          out.resize(n, out[0]);
+        return out;
+      }
+
+      std::vector<types::boundary_id>
+      parse_id_list(const std::string &text)
+      {
+        std::vector<types::boundary_id> ids;
+        for (const int i :
+             Utilities::string_to_int(Utilities::split_string_list(text, ',')))
+          ids.push_back(static_cast<types::boundary_id>(i));
+        return ids;
+      }
+    } // namespace
+
+    template <int dim>
+    Point<dim>
+    parse_point(const std::string &text, const std::string &entry)
+    {
+      const auto parts = Utilities::split_string_list(text, ',');
+      if (parts.size() != dim)
+        throw InputError("Parameter '" + entry + "' = '" + text +
+                         "': expected " + std::to_string(dim) +
+                         " comma-separated coordinates");
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = Utilities::string_to_double(parts[d]);
+      return p;
+    }
+
+    std::string
+    body_section(const unsigned int i)
+    {
+      return "Body " + std::to_string(i);
+    }
+
+    // ------------------------------------------------------------------ Grid
+    template <int dim>
+    void
+    Grid<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Grid");
+      prm.declare_entry("Type",
+                        "hyper rectangle",
+                        Patterns::Selection("hyper rectangle|mesh file"),
+                        "Background grid: a subdivided box, or a Gmsh (.msh) "
+                        "or UCD (.inp/.ucd) file. Box boundary ids are "
+                        "0/1 (x min/max), 2/3 (y), 4/5 (z).");
+      prm.declare_entry("Lower corner",
+                        default_point(dim, 0.),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Lower corner of the box [m].");
+      prm.declare_entry("Upper corner",
+                        default_point(dim, 1.),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Upper corner of the box [m].");
+      prm.declare_entry("Subdivisions",
+                        "10",
+                        Patterns::List(Patterns::Integer(1), 1, dim),
+                        "Cells per direction: one number for all directions "
+                        "or one per direction.");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::FileName(),
+                        "Mesh file for Type = mesh file, relative to the "
+                        "parameter file's folder or absolute.");
+      prm.declare_entry("Global refinements",
+                        "0",
+                        Patterns::Integer(0, 12),
+                        "Uniform refinements applied after creation.");
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    Grid<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Grid");
+      type  = prm.get("Type") == "mesh file" ? Type::mesh_file :
+                                               Type::hyper_rectangle;
+      lower = parse_point<dim>(prm.get("Lower corner"), "Grid/Lower corner");
+      upper = parse_point<dim>(prm.get("Upper corner"), "Grid/Upper corner");
+      subdivisions =
+        parse_unsigned_list(prm.get("Subdivisions"), dim, "Grid/Subdivisions");
+      mesh_file          = prm.get("Mesh file");
+      global_refinements = prm.get_integer("Global refinements");
+      prm.leave_subsection();
+      if (type == Type::hyper_rectangle)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(upper[d] > lower[d]))
+            throw InputError("Grid/Upper corner must exceed Grid/Lower "
+                             "corner in every direction");
+      if (type == Type::mesh_file && mesh_file.empty())
+        throw InputError(
+          "Grid/Type = mesh file needs Grid/Mesh file to be set");
+    }
+
+    // ---------------------------------------------------------- TimeStepping
+    void
+    TimeStepping::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time stepping");
+      prm.declare_entry("End time", "1", Patterns::Double(0), "End time [s].");
+      prm.declare_entry("Scheme",
+                        "MUSL",
+                        Patterns::Selection("USF|USL|MUSL"),
+                        "When the stress is updated: USF (before the "
+                        "internal force), USL (after the grid update), MUSL "
+                        "(after re-mapping the updated particle momentum).");
+      prm.declare_entry("Time step control",
+                        "CFL",
+                        Patterns::Selection("fixed|CFL"),
+                        "Fixed step, or dt = CFL number * min_p h/(c_p + "
+                        "|v_p|) recomputed every step.");
+      prm.declare_entry("Time step",
+                        "1e-3",
+                        Patterns::Double(0),
+                        "Step for Time step control = fixed [s]. A step above "
+                        "the stability limit h/(c + |v|) is refused.");
+      prm.declare_entry("CFL number",
+                        "0.5",
+                        Patterns::Double(0, 1),
+                        "Fraction of the stability limit used as step.");
+      prm.declare_entry("FLIP fraction",
+                        "1",
+                        Patterns::Double(0, 1),
+                        "Particle velocity update: 1 = FLIP (increment), 0 "
+                        "= PIC (grid velocity), in between a blend.");
+      prm.declare_entry("Damping coefficient",
+                        "0",
+                        Patterns::Double(0),
+                        "Mass-proportional damping c [1/s]: the grid "
+                        "force gets -c m_i v_i (for quasi-static runs).");
+      prm.declare_entry("Maximum number of steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Stop after this many steps (0: no limit).");
+      prm.leave_subsection();
+    }
+
+    void
+    TimeStepping::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time stepping");
+      end_time = prm.get_double("End time");
+      const std::string s = prm.get("Scheme");
+      scheme = s == "USF" ? Scheme::usf : s == "USL" ? Scheme::usl : Scheme::musl;
+      step_control  = prm.get("Time step control") == "fixed" ?
+                        StepControl::fixed :
+                        StepControl::cfl;
+      time_step     = prm.get_double("Time step");
+      cfl_number    = prm.get_double("CFL number");
+      flip_fraction = prm.get_double("FLIP fraction");
+      damping       = prm.get_double("Damping coefficient");
+      max_steps     = prm.get_integer("Maximum number of steps");
+      prm.leave_subsection();
+      if (step_control == StepControl::fixed && !(time_step > 0))
+        throw InputError("Time stepping/Time step must be positive");
+      if (step_control == StepControl::cfl && !(cfl_number > 0))
+        throw InputError("Time stepping/CFL number must be positive");
+    }
+
+    // ---------------------------------------------------- BoundaryConditions
+    void
+    BoundaryConditions::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      prm.declare_entry("Fixed boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Grid boundary ids whose nodes are held fixed.");
+      prm.declare_entry("Slip boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Grid boundary ids with zero normal velocity; other "
+                        "boundaries are free.");
+      prm.declare_entry("Particles leaving the grid",
+                        "error",
+                        Patterns::Selection("error|remove"),
+                        "error: stop with a message naming the particle; "
+                        "remove: delete it and report the removed mass in "
+                        "the statistics.");
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      fixed = parse_id_list(prm.get("Fixed boundary ids"));
+      slip  = parse_id_list(prm.get("Slip boundary ids"));
+      remove_lost_particles = prm.get("Particles leaving the grid") == "remove";
+      prm.leave_subsection();
+      for (const auto f : fixed)
+        for (const auto s : slip)
+          if (f == s)
+            throw InputError("Boundary conditions: boundary id " +
+                             std::to_string(f) +
+                             " is listed as both fixed and slip");
+    }
+
+    // ------------------------------------------------------------------ Body
+    template <int dim>
+    void
+    Body<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      const std::string xyz = dim == 1 ? "x" : dim == 2 ? "x, y" : "x, y, z";
+      prm.declare_entry("Geometry",
+                        "box",
+                        Patterns::Selection("box|ball|mesh file"),
+                        "Body mesh: a subdivided box, a ball (disk in 2D) "
+                        "meshed conformingly, or a mesh file. Each body "
+                        "cell is split into n^dim particle domains.");
+      prm.declare_entry("Lower corner",
+                        default_point(dim, 0.25),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Box: lower corner [m].");
+      prm.declare_entry("Upper corner",
+                        default_point(dim, 0.75),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Box: upper corner [m].");
+      prm.declare_entry("Subdivisions",
+                        "4",
+                        Patterns::List(Patterns::Integer(1), 1, dim),
+                        "Box: body cells per direction.");
+      prm.declare_entry("Center",
+                        default_point(dim, 0.5),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Ball: centre [m].");
+      prm.declare_entry("Radius", "0.25", Patterns::Double(0), "Ball: radius [m].");
+      prm.declare_entry("Refinements",
+                        "2",
+                        Patterns::Integer(0, 10),
+                        "Ball: global refinements of the coarse ball mesh "
+                        "(5 cells in 2D, 7 in 3D).");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::FileName(),
+                        "Mesh file: body mesh (Gmsh .msh or UCD).");
+      prm.declare_entry("Particles per direction",
+                        "2",
+                        Patterns::Integer(1, 10),
+                        "n: each body cell gives n^dim particles.");
+      prm.declare_entry("Initial velocity",
+                        default_point(dim, 0.),
+                        Patterns::Anything(),
+                        "Velocity at t = 0 [m/s], dim expressions of " + xyz +
+                          " separated by ';' (muparser).");
+      prm.declare_entry(
+        "Initial stress",
+        dim == 1 ? "0" : dim == 2 ? "0; 0; 0" : "0; 0; 0; 0; 0; 0",
+        Patterns::Anything(),
+        std::string("Cauchy stress at t = 0 [Pa], expressions of ") + xyz +
+          " separated by ';': " +
+          (dim == 1 ? "xx" :
+           dim == 2 ? "xx; yy; xy (and optionally a fourth, zz)" :
+                      "xx; yy; zz; yz; xz; xy") +
+          ".");
+      prm.declare_entry("Body force",
+                        default_point(dim, 0.),
+                        Patterns::Anything(),
+                        "Body force per unit mass [m/s^2], expressions of " +
+                          xyz + ", the material coordinates " +
+                          (dim == 1 ? "X" : dim == 2 ? "X, Y" : "X, Y, Z") +
+                          " (initial position) and t, separated by ';'.");
+      prm.declare_entry("Traction",
+                        default_point(dim, 0.),
+                        Patterns::Anything(),
+                        "Surface traction [Pa] on the body-mesh boundaries "
+                        "listed in Traction boundary ids; same variables "
+                        "as Body force.");
+      prm.declare_entry("Traction boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Body-mesh boundary ids that carry the traction "
+                        "(box: 0/1 x min/max, 2/3 y, 4/5 z).");
+      prm.enter_subsection("Material");
+      materials::declare_material_parameters(prm);
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    Body<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      const std::string g = prm.get("Geometry");
+      geometry = g == "box" ? Geometry::box :
+                 g == "ball" ? Geometry::ball :
+                               Geometry::mesh_file;
+      lower  = parse_point<dim>(prm.get("Lower corner"), "Lower corner");
+      upper  = parse_point<dim>(prm.get("Upper corner"), "Upper corner");
+      subdivisions =
+        parse_unsigned_list(prm.get("Subdivisions"), dim, "Subdivisions");
+      center      = parse_point<dim>(prm.get("Center"), "Center");
+      radius      = prm.get_double("Radius");
+      refinements = prm.get_integer("Refinements");
+      mesh_file   = prm.get("Mesh file");
+      particles_per_direction = prm.get_integer("Particles per direction");
+      initial_velocity        = prm.get("Initial velocity");
+      initial_stress          = prm.get("Initial stress");
+      body_force              = prm.get("Body force");
+      traction                = prm.get("Traction");
+      traction_boundary_ids   = parse_id_list(prm.get("Traction boundary ids"));
+      if (geometry == Geometry::box)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(upper[d] > lower[d]))
+            throw InputError(
+              "Upper corner must exceed Lower corner in every direction");
+      if (geometry == Geometry::ball && !(radius > 0))
+        throw InputError("Radius must be positive");
+      if (geometry == Geometry::mesh_file && mesh_file.empty())
+        throw InputError("Geometry = mesh file needs Mesh file to be set");
+    }
+
+    // ---------------------------------------------------------------- Output
+    void
+    Output::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Folder for all results, relative to the working "
+                        "directory. Created if missing.");
+      prm.declare_entry("Interval",
+                        "0.1",
+                        Patterns::Double(0),
+                        "Simulated time between outputs [s]; 0: every "
+                        "step. The first and last states are always "
+                        "written.");
+      prm.declare_entry("Write vtu",
+                        "true",
+                        Patterns::Bool(),
+                        "ParaView files of particles (and grid): "
+                        "particles.pvd, grid.pvd.");
+      prm.declare_entry("Write grid",
+                        "true",
+                        Patterns::Bool(),
+                        "Also write the background grid fields (nodal "
+                        "mass, velocity) when Write vtu is on.");
+      prm.declare_entry("Write csv",
+                        "true",
+                        Patterns::Bool(),
+                        "Particle table particles-NNNNN.csv, sorted by id.");
+      prm.declare_entry("Test summary file",
+                        "",
+                        Patterns::FileName(),
+                        "If set, a short summary for regression tests is "
+                        "written to this file (relative to the working "
+                        "directory).");
+      prm.declare_entry("Progress interval",
+                        "10",
+                        Patterns::Double(0),
+                        "Wall-clock seconds between progress lines.");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory         = prm.get("Directory");
+      interval          = prm.get_double("Interval");
+      write_vtu         = prm.get_bool("Write vtu");
+      write_grid        = prm.get_bool("Write grid");
+      write_csv         = prm.get_bool("Write csv");
+      test_summary      = prm.get("Test summary file");
+      progress_interval = prm.get_double("Progress interval");
+      prm.leave_subsection();
+      if (directory.empty())
+        throw InputError("Output/Directory must not be empty");
+    }
+
+    // ------------------------------------------------------------- preamble
+    void
+    declare_preamble(ParameterHandler &prm)
+    {
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(1, 3),
+                        "Space dimension of the model: 1, 2 or 3.");
+      prm.declare_entry("Number of bodies",
+                        "1",
+                        Patterns::Integer(1, 100),
+                        "Number of `Body i` subsections (i = 0, 1, ...).");
+    }
+
+    Preamble
+    read_preamble(const std::string &file_name)
+    {
+      std::ifstream in(file_name);
+      if (!in)
+        throw InputError("Cannot open the parameter file '" + file_name + "'");
+      ParameterHandler prm;
+      declare_preamble(prm);
+      try
+        {
+          prm.parse_input(file_name, "", /*skip_undefined=*/true);
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError("Error reading the parameter file '" + file_name +
+                           "':\n" + e.what());
+        }
+      return {static_cast<unsigned int>(prm.get_integer("Dimension")),
+              static_cast<unsigned int>(prm.get_integer("Number of bodies"))};
+    }
+
+    void
+    parse_file(ParameterHandler &prm, const std::string &file_name)
+    {
+      std::ifstream in(file_name);
+      if (!in)
+        throw InputError("Cannot open the parameter file '" + file_name + "'");
+      try
+        {
+          prm.parse_input(file_name, "", /*skip_undefined=*/false, true);
+        }
+      catch (const std::exception &e)
+        {
+          // deal.II's message names the file and line; strip its
+          // boilerplate so the user sees one clear paragraph.
+          std::string msg = e.what();
+          const auto  pos = msg.find("Additional information:");
+          if (pos != std::string::npos)
+            msg = msg.substr(pos + 23);
+          while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
+            msg.pop_back();
+          while (!msg.empty() && (msg.front() == '\n' || msg.front() == ' '))
+            msg.erase(0, 1);
+          throw InputError("Error in the parameter file '" + file_name +
+                           "':\n    " + msg);
+        }
+    }
+
+    // -------------------------------------------------------- AllParameters
+    template <int dim>
+    void
+    AllParameters<dim>::declare_parameters(ParameterHandler &prm,
+                                           const unsigned int n_bodies)
+    {
+      declare_preamble(prm);
+      prm.declare_entry(
+        "Kinematic assumption",
+        "default",
+        Patterns::Selection("default|three dimensional|plane strain|"
+                            "plane stress|uniaxial strain|uniaxial stress"),
+        "How the model is embedded in 3D. default: three dimensional in 3D, "
+        "plane strain in 2D, uniaxial stress in 1D.");
+      prm.declare_entry("Constants",
+                        "",
+                        Patterns::Anything(),
+                        "Named constants for all expressions, e.g. "
+                        "'v0=0.1, L=25'. Benchmarks read their physical "
+                        "parameters from here too.");
+      prm.declare_entry("Benchmark",
+                        "none",
+                        Patterns::Anything(),
+                        "Name of a benchmark whose error measures are added "
+                        "to the statistics file (see doc/benchmarks.md), or "
+                        "none.");
+      Grid<dim>::declare_parameters(prm);
+      TimeStepping::declare_parameters(prm);
+      BoundaryConditions::declare_parameters(prm);
+      Output::declare_parameters(prm);
+      prm.enter_subsection("Bodies");
+      for (unsigned int i = 0; i < n_bodies; ++i)
+        {
+          prm.enter_subsection(body_section(i));
+          Body<dim>::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    AllParameters<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      if (prm.get_integer("Dimension") != dim)
+        throw InputError("Dimension mismatch");
+      n_bodies = prm.get_integer("Number of bodies");
+      const std::string k = prm.get("Kinematic assumption");
+      if (k == "default")
+        kinematics = dim == 3 ? KinematicAssumption::three_dimensional :
+                     dim == 2 ? KinematicAssumption::plane_strain :
+                                KinematicAssumption::uniaxial_stress;
+      else if (k == "three dimensional")
+        kinematics = KinematicAssumption::three_dimensional;
+      else if (k == "plane strain")
+        kinematics = KinematicAssumption::plane_strain;
+      else if (k == "plane stress")
+        kinematics = KinematicAssumption::plane_stress;
+      else if (k == "uniaxial strain")
+        kinematics = KinematicAssumption::uniaxial_strain;
+      else
+        kinematics = KinematicAssumption::uniaxial_stress;
+      const bool ok =
+        (dim == 3 && kinematics == KinematicAssumption::three_dimensional) ||
+        (dim == 2 && (kinematics == KinematicAssumption::plane_strain ||
+                      kinematics == KinematicAssumption::plane_stress)) ||
+        (dim == 1 && (kinematics == KinematicAssumption::uniaxial_strain ||
+                      kinematics == KinematicAssumption::uniaxial_stress));
+      if (!ok)
+        throw InputError("Kinematic assumption = '" + k +
+                         "' does not fit Dimension = " + std::to_string(dim));
+      benchmark = prm.get("Benchmark");
+      constants = parse_constants(prm.get("Constants"), "Constants");
+
+      grid.parse_parameters(prm);
+      time.parse_parameters(prm);
+      boundary.parse_parameters(prm);
+      output.parse_parameters(prm);
+      bodies.resize(n_bodies);
+      prm.enter_subsection("Bodies");
+      for (unsigned int i = 0; i < n_bodies; ++i)
+        {
+          prm.enter_subsection(body_section(i));
+          try
+            {
+              bodies[i].parse_parameters(prm);
+            }
+          catch (const InputError &e)
+            {
+              throw InputError("Bodies/" + body_section(i) + ": " + e.what());
+            }
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+    template struct Grid<1>;
+    template struct Grid<2>;
+    template struct Grid<3>;
+    template struct Body<1>;
+    template struct Body<2>;
+    template struct Body<3>;
+    template struct AllParameters<1>;
+    template struct AllParameters<2>;
+    template struct AllParameters<3>;
+    template Point<1>
+    parse_point<1>(const std::string &, const std::string &);
+    template Point<2>
+    parse_point<2>(const std::string &, const std::string &);
+    template Point<3>
+    parse_point<3>(const std::string &, const std::string &);
+  } // namespace Parameters
+} // namespace mpm

@@ -1,0 +1,547 @@
+#include <deal.II/base/utilities.h>
+
+#include <mpm/grid/grid_update.h>
+#include <mpm/solver/simulator.h>
+#include <mpm/solver/stress_update.h>
+#include <mpm/transfer/grid_to_particle.h>
+#include <mpm/utilities/input_error.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace mpm
+{
+  using namespace dealii;
+
+  namespace
+  {
+    double
+    wall_seconds()
+    {
+      using namespace std::chrono;
+      return duration<double>(steady_clock::now().time_since_epoch()).count();
+    }
+
+    std::string
+    scheme_name(const Parameters::TimeStepping::Scheme s)
+    {
+      using S = Parameters::TimeStepping::Scheme;
+      return s == S::usf ? "USF" : s == S::usl ? "USL" : "MUSL";
+    }
+  } // namespace
+
+  template <int dim>
+  Simulator<dim>::Simulator(const Parameters::AllParameters<dim> &parameters,
+                            ParameterHandler &                    prm,
+                            const MPI_Comm                        comm)
+    : params(parameters)
+    , prm(prm)
+    , comm(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , input_folder(
+        std::filesystem::path(parameters.file_name).parent_path().string())
+    , background(comm)
+  {}
+
+  // ----------------------------------------------------------------- set-up
+  template <int dim>
+  void
+  Simulator<dim>::setup()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    background.create(params.grid, input_folder);
+    background.setup(params.boundary);
+    create_bodies();
+    create_particles();
+    background.initialize_vector(p2g, transfer::P2GLayout<dim>::n_components);
+    background.initialize_vector(kinematics, KinematicsLayout<dim>::n_components);
+    background.initialize_vector(remap, dim);
+    benchmark = benchmarks::create_benchmark<dim>(params.benchmark, params.constants);
+
+    // Nodes lighter than this carry no velocity (a relative threshold:
+    // far below any real nodal mass, far above round-off).
+    const auto s   = statistics();
+    min_nodal_mass = 1e-12 * s.mass / std::max<double>(1, s.n_particles);
+
+    stable_dt = ::mpm::stable_time_step(background, particle_handler, bodies);
+    const double limit = stable_time_step();
+    if (params.time.step_control ==
+          Parameters::TimeStepping::StepControl::fixed &&
+        params.time.time_step > limit)
+      {
+        std::ostringstream msg;
+        msg << "Time stepping/Time step = " << params.time.time_step
+            << " exceeds the stability limit min_p h/(c_p + |v_p|) = "
+            << limit << " of the initial state; choose at most that, or "
+            << "Time step control = CFL";
+        throw InputError(msg.str());
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::create_bodies()
+  {
+    bodies.resize(params.n_bodies);
+    const unsigned int n_stress_in = dim == 1 ? 1 : dim == 2 ? 3 : 6;
+    for (unsigned int b = 0; b < params.n_bodies; ++b)
+      {
+        const std::string where = "Bodies/" + Parameters::body_section(b);
+        auto &            body  = bodies[b];
+        body.index              = b;
+        body.prm                = params.bodies[b];
+        prm.enter_subsection("Bodies");
+        prm.enter_subsection(Parameters::body_section(b));
+        prm.enter_subsection("Material");
+        body.material =
+          materials::create_material(prm, params.kinematics, where + "/Material");
+        prm.leave_subsection();
+        prm.leave_subsection();
+        prm.leave_subsection();
+
+        const auto &c = params.constants;
+        body.initial_velocity = Expression<dim>(body.prm.initial_velocity, dim,
+                                                spatial_variables(dim), c, false,
+                                                where + "/Initial velocity");
+        // 2D stress: xx; yy; xy and optionally zz
+        const unsigned int n_given =
+          Utilities::split_string_list(body.prm.initial_stress, ';').size();
+        const unsigned int n_stress =
+          (dim == 2 && n_given == 4) ? 4 : n_stress_in;
+        body.initial_stress = Expression<dim>(body.prm.initial_stress, n_stress,
+                                              spatial_variables(dim), c, false,
+                                              where + "/Initial stress");
+        body.body_force = Expression<2 * dim>(body.prm.body_force, dim,
+                                              load_variables(dim), c, true,
+                                              where + "/Body force");
+        body.traction = Expression<2 * dim>(body.prm.traction, dim,
+                                            load_variables(dim), c, true,
+                                            where + "/Traction");
+        layout.n_history = std::max(layout.n_history, body.material->n_history());
+        if (body.material->n_history() > 0 && history_names.empty())
+          history_names = body.material->history_names();
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::create_particles()
+  {
+    using L = ParticleLayout<dim>;
+    particle_handler.initialize(background.triangulation(),
+                                background.mapping(),
+                                layout.n_properties());
+    particle_handler.signals.particle_lost.connect(
+      [this](const typename Particles::ParticleIterator<dim> &p,
+             const typename Triangulation<dim>::active_cell_iterator &) {
+        const double m = p->get_properties()[L::mass];
+        removed_mass += m;
+        std::ostringstream s;
+        s << "particle " << p->get_id() << " (body "
+          << p->get_properties()[L::body] << ") left the grid at step "
+          << current_step << ", t = " << current_time << ", position ("
+          << p->get_location() << ")";
+        lost_messages.push_back(s.str());
+      });
+
+    const auto         boxes  = background.global_bounding_boxes();
+    const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
+    types::particle_index id_offset = 0;
+    for (const auto &body : bodies)
+      {
+        const std::string  where = "Bodies/" + Parameters::body_section(body.index);
+        Triangulation<dim> mesh;
+        create_body_mesh(mesh, body.prm, input_folder, where);
+        const unsigned int n = body.prm.particles_per_direction;
+        std::vector<ParticleSeed<dim>>  seeds;
+        std::vector<unsigned long long> seed_ids;
+        split_body_cells(mesh, n, body.prm.traction_boundary_ids, rank, nranks,
+                         seeds, seed_ids);
+
+        std::vector<Point<dim>>            positions(seeds.size());
+        std::vector<std::vector<double>>   properties(seeds.size());
+        std::vector<types::particle_index> ids(seeds.size());
+        const double rho = body.material->reference_density();
+        for (unsigned int i = 0; i < seeds.size(); ++i)
+          {
+            const auto &s = seeds[i];
+            positions[i]  = s.position;
+            ids[i]        = id_offset + seed_ids[i];
+            auto &p       = properties[i];
+            p.assign(layout.n_properties(), 0.);
+            p[L::mass]    = rho * s.volume;
+            p[L::volume0] = s.volume;
+            p[L::volume]  = s.volume;
+            p[L::body]    = body.index;
+            body.initial_velocity.value(s.position, 0., &p[L::velocity]);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                p[L::X + d]               = s.position[d];
+                p[L::F + d * dim + d]     = 1.;
+                for (unsigned int e = 0; e < dim; ++e)
+                  p[L::domain + d * dim + e] = s.domain[d][e];
+              }
+            p[L::traction_area] = s.traction_area;
+            double sigma[6] = {};
+            body.initial_stress.value(s.position, 0., sigma);
+            double *out = &p[L::stress];
+            if (dim == 1)
+              out[0] = sigma[0];
+            else if (dim == 2)
+              {
+                out[0] = sigma[0];
+                out[1] = sigma[1];
+                out[5] = sigma[2];
+                out[2] = body.initial_stress.n_components() == 4 ? sigma[3] : 0.;
+              }
+            else
+              std::copy(sigma, sigma + 6, out);
+          }
+        const auto found =
+          particle_handler.insert_global_particles(positions, boxes, properties, ids);
+
+        // Particles that no rank's grid contains: the body sticks out.
+        IndexSet located(seeds.size());
+        for (const auto &f : found)
+          located.add_indices(f.second);
+        std::string outside;
+        for (unsigned int i = 0; i < seeds.size(); ++i)
+          if (!located.is_element(i))
+            {
+              std::ostringstream s;
+              s << where << ": the particle at (" << positions[i]
+                << ") lies outside the background grid; every body must be "
+                << "inside the grid (check Grid/Lower corner, Upper corner "
+                << "and the body geometry)";
+              outside = s.str();
+              break;
+            }
+        const unsigned int bad_rank = Utilities::MPI::min(
+          outside.empty() ? nranks : rank, comm);
+        if (bad_rank < nranks)
+          throw InputError(Utilities::MPI::broadcast(comm, outside, bad_rank));
+        id_offset += mesh.n_active_cells() * Utilities::fixed_power<dim>(n);
+      }
+    particle_handler.update_cached_numbers();
+  }
+
+  // -------------------------------------------------------------- the step
+  template <int dim>
+  void
+  Simulator<dim>::do_time_step(const double dt)
+  {
+    using Scheme = Parameters::TimeStepping::Scheme;
+    using transfer::P2GContent;
+    last_dt = dt;
+    if (params.time.scheme == Scheme::usf)
+      {
+        particle_to_grid(P2GContent::mass_momentum);
+        {
+          TimerOutput::Scope t(timer, "grid update");
+          const auto e = nodal_velocity(background, p2g, p2g,
+                                        transfer::P2GLayout<dim>::n_components,
+                                        transfer::P2GLayout<dim>::momentum,
+                                        min_nodal_mass, kinematics);
+          if (local_error.empty())
+            local_error = e;
+        }
+        update_stress(dt);
+        particle_to_grid(P2GContent::force);
+        update_grid(dt);
+        grid_to_particle(dt);
+      }
+    else
+      {
+        particle_to_grid(P2GContent::mass_momentum_force);
+        update_grid(dt);
+        grid_to_particle(dt);
+        if (params.time.scheme == Scheme::musl)
+          remap_momentum();
+        update_stress(dt);
+      }
+    update_positions();
+    current_time += dt;
+    ++current_step;
+    check_errors();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::particle_to_grid(const transfer::P2GContent content)
+  {
+    TimerOutput::Scope t(timer, "P2G");
+    transfer::particle_to_grid(background, particle_handler, bodies,
+                               current_time, content, p2g);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::update_grid(const double dt)
+  {
+    TimerOutput::Scope t(timer, "grid update");
+    const auto e = ::mpm::update_grid(background, p2g, dt, params.time.damping,
+                                      min_nodal_mass, kinematics);
+    if (local_error.empty())
+      local_error = e;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::grid_to_particle(const double dt)
+  {
+    TimerOutput::Scope t(timer, "G2P");
+    const auto e = transfer::grid_to_particle(background, particle_handler,
+                                              kinematics, dt,
+                                              params.time.flip_fraction);
+    if (local_error.empty())
+      local_error = e;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::remap_momentum()
+  {
+    TimerOutput::Scope t(timer, "MUSL re-map");
+    transfer::particle_to_grid(background, particle_handler, bodies,
+                               current_time, transfer::P2GContent::momentum,
+                               remap);
+    const auto e = nodal_velocity(background, p2g, remap, dim, 0,
+                                  min_nodal_mass, kinematics);
+    if (local_error.empty())
+      local_error = e;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::update_stress(const double dt)
+  {
+    TimerOutput::Scope t(timer, "stress update");
+    const auto r = ::mpm::update_stress(background, particle_handler, bodies,
+                                        kinematics, dt);
+    stable_dt = r.stable_time_step;
+    if (local_error.empty())
+      local_error = r.error;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::update_positions()
+  {
+    TimerOutput::Scope t(timer, "position update");
+    lost_messages.clear();
+    particle_handler.sort_particles_into_subdomains_and_cells();
+    if (!lost_messages.empty() && !params.boundary.remove_lost_particles &&
+        local_error.empty())
+      local_error = lost_messages.front() +
+                    " (set Boundary conditions/Particles leaving the grid = "
+                    "remove to delete such particles instead)";
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::check_errors()
+  {
+    // One collective per step: the stable step and the first failing rank.
+    const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
+    double local[2] = {stable_dt, double(local_error.empty() ? nranks : rank)};
+    double global[2];
+    Utilities::MPI::min(ArrayView<const double>(local, 2), comm,
+                        ArrayView<double>(global, 2));
+    stable_dt = global[0];
+    if (global[1] < nranks)
+      {
+        const std::string msg = Utilities::MPI::broadcast(
+          comm, local_error, static_cast<unsigned int>(global[1]));
+        std::ostringstream s;
+        s << "at step " << current_step << " (t = " << current_time
+          << "): " << msg;
+        throw RuntimeError(s.str());
+      }
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::stable_time_step()
+  {
+    return Utilities::MPI::min(stable_dt, comm);
+  }
+
+  // ------------------------------------------------------------ time loop
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    using StepControl = Parameters::TimeStepping::StepControl;
+    const auto &out   = params.output;
+    print_header();
+
+    // Only now, with the input checked, touch the output folder.
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::filesystem::create_directories(out.directory);
+    MPI_Barrier(comm);
+    writer = std::make_unique<OutputWriter<dim>>(comm, out.directory, layout,
+                                                 history_names);
+    statistics_file = std::make_unique<StatisticsFile<dim>>();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      statistics_file->open(out.directory + "/statistics.txt",
+                            benchmark ? benchmark->columns() :
+                                        std::vector<std::string>());
+
+    // The first output has no grid fields yet: fill them from the state.
+    particle_to_grid(transfer::P2GContent::mass_momentum);
+    nodal_velocity(background, p2g, p2g, transfer::P2GLayout<dim>::n_components,
+                   transfer::P2GLayout<dim>::momentum, min_nodal_mass,
+                   kinematics);
+    write_output();
+    next_output_time = out.interval;
+
+    wall_start = last_progress = wall_seconds();
+    const double end  = params.time.end_time;
+    const double tiny = 1e-12 * std::max(end, 1e-300);
+    while (current_time < end - tiny &&
+           (params.time.max_steps == 0 || current_step < params.time.max_steps))
+      {
+        double dt = params.time.step_control == StepControl::fixed ?
+                      params.time.time_step :
+                      params.time.cfl_number * stable_dt;
+        if (current_time + dt > end - tiny)
+          dt = end - current_time;
+        do_time_step(dt);
+        if (current_time >= next_output_time - 1e-9 * dt ||
+            current_time >= end - tiny)
+          {
+            write_output();
+            while (next_output_time <= current_time + 1e-9 * dt)
+              next_output_time += std::max(out.interval, 1e-300);
+          }
+        print_progress(false);
+      }
+    if (!(current_time >= end - tiny))
+      write_output(); // stopped by the step limit
+    print_progress(true);
+
+    if (!out.test_summary.empty() && Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ostringstream s;
+        for (const auto &r : summary_rows)
+          s << r << '\n';
+        write_file_atomically(out.test_summary, s.str());
+      }
+    timer.print_summary();
+  }
+
+  template <int dim>
+  GlobalStatistics<dim>
+  Simulator<dim>::statistics()
+  {
+    GlobalStatistics<dim> s;
+    s.compute(particle_handler, bodies, comm);
+    s.removed_mass = Utilities::MPI::sum(removed_mass, comm);
+    return s;
+  }
+
+  template <int dim>
+  std::vector<double>
+  Simulator<dim>::benchmark_values()
+  {
+    return benchmark ? benchmark->measure(particle_handler, current_time, comm) :
+                       std::vector<double>();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::write_output()
+  {
+    TimerOutput::Scope t(timer, "output");
+    const auto &out   = params.output;
+    const auto  stats = statistics();
+    const auto  extra = benchmark_values();
+    statistics_file->write_row(current_time, current_step, last_dt, stats, extra);
+    if (out.write_vtu)
+      {
+        writer->write_particles_vtu(particle_handler, current_time);
+        if (out.write_grid)
+          writer->write_grid_vtu(background, p2g, kinematics, current_time);
+      }
+    if (out.write_csv)
+      writer->write_particles_csv(particle_handler, current_time);
+    writer->advance();
+
+    if (!out.test_summary.empty())
+      {
+        // Few digits, scaled quantities: stable across ranks and compilers.
+        std::ostringstream s;
+        s << std::scientific << std::setprecision(6) << "t " << current_time
+          << " step " << current_step << " n " << stats.n_particles
+          << " mass " << stats.mass << " removed " << stats.removed_mass
+          << " Ekin " << stats.kinetic_energy << " Estrain "
+          << stats.strain_energy;
+        for (unsigned int d = 0; d < dim; ++d)
+          s << " p" << d << ' ' << stats.momentum[d];
+        if (dim >= 2)
+          s << " Lz " << stats.angular_momentum[2];
+        for (const double e : extra)
+          s << " b " << e;
+        summary_rows.push_back(s.str());
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::print_header()
+  {
+    const auto &p = params;
+    pcout << "mpm: " << p.file_name << '\n'
+          << "  dimension " << dim << " (" << to_string(p.kinematics) << "), "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
+          << "  grid: " << background.n_global_cells() << " cells, "
+          << background.n_global_nodes() << " nodes"
+          << (background.is_cartesian() ? " (Cartesian)" : " (general Q1)")
+          << '\n';
+    for (const auto &b : bodies)
+      pcout << "  body " << b.index << ": " << b.material->name()
+            << ", rho0 = " << b.material->reference_density() << ", "
+            << b.prm.particles_per_direction << "^" << dim
+            << " particles per body cell\n";
+    pcout << "  particles: " << particle_handler.n_global_particles() << '\n'
+          << "  scheme " << scheme_name(p.time.scheme) << ", FLIP fraction "
+          << p.time.flip_fraction << ", end time " << p.time.end_time << '\n'
+          << "  time step: "
+          << (p.time.step_control == Parameters::TimeStepping::StepControl::fixed ?
+                "fixed " + Utilities::to_string(p.time.time_step) :
+                "CFL " + Utilities::to_string(p.time.cfl_number))
+          << " (stability limit now " << stable_time_step() << ")\n"
+          << "  output: " << p.output.directory << "/ every "
+          << p.output.interval << " s" << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::print_progress(const bool force)
+  {
+    const double now = wall_seconds();
+    if (!force && now - last_progress < params.output.progress_interval)
+      return;
+    last_progress        = now;
+    const double done    = params.time.end_time > 0 ?
+                             current_time / params.time.end_time : 1.;
+    const double elapsed = now - wall_start;
+    std::ostringstream s;
+    s << "  step " << std::setw(8) << current_step << "  t = " << std::setw(11)
+      << std::setprecision(5) << current_time << "  dt = " << std::setw(11)
+      << last_dt << "  " << std::fixed << std::setprecision(1) << std::setw(5)
+      << 100 * done << "%  elapsed " << elapsed << " s";
+    if (done > 0 && done < 1)
+      s << "  left ~" << elapsed * (1 - done) / done << " s";
+    pcout << s.str() << std::endl;
+  }
+
+  template class Simulator<1>;
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace mpm

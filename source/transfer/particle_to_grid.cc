@@ -1,0 +1,145 @@
+#include <mpm/particles/particle_layout.h>
+#include <mpm/transfer/particle_to_grid.h>
+
+namespace mpm
+{
+  namespace transfer
+  {
+    using namespace dealii;
+
+    template <int dim>
+    void
+    particle_to_grid(const BackgroundGrid<dim> &      grid,
+                     Particles::ParticleHandler<dim> &particles,
+                     const std::vector<Body<dim>> &   bodies,
+                     const double                     time,
+                     const P2GContent                 content,
+                     NodalVector &                    nodal)
+    {
+      using L                      = ParticleLayout<dim>;
+      constexpr unsigned int nv    = shape_functions::n_q1<dim>;
+      const bool momentum_only     = content == P2GContent::momentum;
+      const unsigned int nc        = momentum_only ? dim : P2GLayout<dim>::n_components;
+      const unsigned int off_m     = 0;
+      const unsigned int off_p     = momentum_only ? 0 : 1;
+      const unsigned int off_f     = 1 + dim;
+      const bool do_mass           = content == P2GContent::mass_momentum_force ||
+                           content == P2GContent::mass_momentum;
+      const bool do_momentum       = content != P2GContent::force;
+      const bool do_force          = content == P2GContent::mass_momentum_force ||
+                            content == P2GContent::force;
+
+      std::vector<char> body_loaded(bodies.size());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        body_loaded[b] = bodies[b].has_body_force();
+
+      // The USF force pass adds to the mass and momentum of the first pass
+      // (whose ghost entries compress() has already zeroed).
+      if (content != P2GContent::force)
+        nodal = 0.;
+      double *const out = nodal.begin();
+
+      double         N[nv];
+      Tensor<1, dim> G[nv];
+      for (const auto &cell : grid.triangulation().active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          const auto pic = particles.particles_in_cell(cell);
+          if (pic.begin() == pic.end())
+            continue;
+          const auto &        geo   = grid.geometry(cell);
+          const unsigned int *nodes = grid.nodes(cell);
+
+          // Accumulate per cell, then scatter once.
+          double local[nv][1 + 2 * dim] = {};
+          for (const auto &p : pic)
+            {
+              const Point<dim>   xi   = p.get_reference_location();
+              const double *     prop = p.get_properties().data();
+              const double       m    = prop[L::mass];
+              if (do_force)
+                geo.values_and_gradients(xi, N, G);
+              else
+                geo.values(xi, N);
+
+              if (do_force)
+                {
+                  // -V sigma grad N, with the in-plane part of the stress
+                  const double V = prop[L::volume];
+                  const double *s = prop + L::stress;
+                  Tensor<2, dim> sigma;
+                  sigma[0][0] = s[0];
+                  if constexpr (dim >= 2)
+                    {
+                      sigma[1][1] = s[1];
+                      sigma[0][1] = sigma[1][0] = s[5];
+                    }
+                  if constexpr (dim == 3)
+                    {
+                      sigma[2][2] = s[2];
+                      sigma[1][2] = sigma[2][1] = s[3];
+                      sigma[0][2] = sigma[2][0] = s[4];
+                    }
+                  const unsigned int b = static_cast<unsigned int>(prop[L::body]);
+                  double ext[dim] = {};
+                  if (body_loaded[b])
+                    {
+                      bodies[b].body_force_at(p.get_location(), prop + L::X, time, ext);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        ext[d] *= m;
+                    }
+                  if (prop[L::traction_area] > 0)
+                    {
+                      double t[dim];
+                      bodies[b].traction_at(p.get_location(), prop + L::X, time, t);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        ext[d] += t[d] * prop[L::traction_area];
+                    }
+                  for (unsigned int v = 0; v < nv; ++v)
+                    {
+                      const Tensor<1, dim> f = -V * (sigma * G[v]);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        local[v][1 + dim + d] += f[d] + N[v] * ext[d];
+                    }
+                }
+              if (do_momentum)
+                for (unsigned int v = 0; v < nv; ++v)
+                  {
+                    const double w = N[v] * m;
+                    local[v][0] += w;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      local[v][1 + d] += w * prop[L::velocity + d];
+                  }
+            }
+
+          for (unsigned int v = 0; v < nv; ++v)
+            {
+              double *node = out + nodes[v] * nc;
+              if (do_mass)
+                node[off_m] += local[v][0];
+              if (do_momentum)
+                for (unsigned int d = 0; d < dim; ++d)
+                  node[off_p + d] += local[v][1 + d];
+              if (do_force)
+                for (unsigned int d = 0; d < dim; ++d)
+                  node[off_f + d] += local[v][1 + dim + d];
+            }
+        }
+      nodal.compress(VectorOperation::add);
+    }
+
+    template void
+    particle_to_grid<1>(const BackgroundGrid<1> &, Particles::ParticleHandler<1> &,
+                        const std::vector<Body<1>> &, double, P2GContent,
+                        NodalVector &);
+    template void
+    particle_to_grid<2>(const BackgroundGrid<2> &, Particles::ParticleHandler<2> &,
+                        const std::vector<Body<2>> &, double, P2GContent,
+                        NodalVector &);
+    template void
+    particle_to_grid<3>(const BackgroundGrid<3> &, Particles::ParticleHandler<3> &,
+                        const std::vector<Body<3>> &, double, P2GContent,
+                        NodalVector &);
+  } // namespace transfer
+} // namespace mpm
