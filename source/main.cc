@@ -40,17 +40,31 @@ namespace
     mpm::Parameters::AllParameters<dim> parameters;
     parameters.file_name = file;
     parameters.parse_parameters(prm);
-    mpm::Simulator<dim> simulator(parameters, prm, MPI_COMM_WORLD);
-    simulator.setup();
-    if (validate)
-      {
-        if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-          std::cout << "mpm: " << file << " is valid ("
-                    << simulator.particles().n_global_particles()
-                    << " particles)" << std::endl;
-        return;
-      }
-    simulator.run();
+    // Errors leave the simulator's scope normally (its timer would complain
+    // about being destroyed during stack unwinding) and are re-thrown.
+    std::exception_ptr error;
+    {
+      mpm::Simulator<dim> simulator(parameters, prm, MPI_COMM_WORLD);
+      try
+        {
+          simulator.setup();
+          if (validate)
+            {
+              if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+                std::cout << "mpm: " << file << " is valid ("
+                          << simulator.particles().n_global_particles()
+                          << " particles)" << std::endl;
+            }
+          else
+            simulator.run();
+        }
+      catch (...)
+        {
+          error = std::current_exception();
+        }
+    }
+    if (error)
+      std::rethrow_exception(error);
   }
 
   template <int dim>

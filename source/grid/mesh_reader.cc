@@ -45,12 +45,9 @@ namespace mpm
       }
     catch (const std::exception &e)
       {
-        std::string msg = e.what();
-        const auto  pos = msg.find("Additional information:");
-        if (pos != std::string::npos)
-          msg = msg.substr(pos + 23);
         throw InputError(entry + " = '" + file_name +
-                         "': cannot read the mesh:" + msg);
+                         "': cannot read the mesh: " +
+                         clean_dealii_message(e.what()));
       }
     if (tria.n_global_active_cells() == 0)
       throw InputError(entry + " = '" + file_name + "': the mesh has no cells");

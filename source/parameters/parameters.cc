@@ -5,6 +5,7 @@
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -16,6 +17,16 @@ namespace mpm
 
     namespace
     {
+      /// "0; 0" for vector-valued expressions
+      std::string
+      default_expression(const int dim)
+      {
+        std::string s = "0";
+        for (int d = 1; d < dim; ++d)
+          s += "; 0";
+        return s;
+      }
+
       std::string
       default_point(const int dim, const double value)
       {
@@ -289,7 +300,7 @@ namespace mpm
                         Patterns::Integer(1, 10),
                         "n: each body cell gives n^dim particles.");
       prm.declare_entry("Initial velocity",
-                        default_point(dim, 0.),
+                        default_expression(dim),
                         Patterns::Anything(),
                         "Velocity at t = 0 [m/s], dim expressions of " + xyz +
                           " separated by ';' (muparser).");
@@ -304,14 +315,14 @@ namespace mpm
                       "xx; yy; zz; yz; xz; xy") +
           ".");
       prm.declare_entry("Body force",
-                        default_point(dim, 0.),
+                        default_expression(dim),
                         Patterns::Anything(),
                         "Body force per unit mass [m/s^2], expressions of " +
                           xyz + ", the material coordinates " +
                           (dim == 1 ? "X" : dim == 2 ? "X, Y" : "X, Y, Z") +
                           " (initial position) and t, separated by ';'.");
       prm.declare_entry("Traction",
-                        default_point(dim, 0.),
+                        default_expression(dim),
                         Patterns::Anything(),
                         "Surface traction [Pa] on the body-mesh boundaries "
                         "listed in Traction boundary ids; same variables "
@@ -432,6 +443,32 @@ namespace mpm
                         "Number of `Body i` subsections (i = 0, 1, ...).");
     }
 
+    namespace
+    {
+      /// Parse with the working directory set to the file's folder, so
+      /// that `include other.prm` is found next to the including file.
+      void
+      parse_in_folder(ParameterHandler &prm,
+                      const std::string &file_name,
+                      const bool         skip_undefined)
+      {
+        namespace fs        = std::filesystem;
+        const fs::path path = fs::absolute(file_name);
+        const fs::path cwd  = fs::current_path();
+        fs::current_path(path.parent_path());
+        try
+          {
+            prm.parse_input(path.string(), "", skip_undefined, !skip_undefined);
+          }
+        catch (...)
+          {
+            fs::current_path(cwd);
+            throw;
+          }
+        fs::current_path(cwd);
+      }
+    } // namespace
+
     Preamble
     read_preamble(const std::string &file_name)
     {
@@ -442,12 +479,12 @@ namespace mpm
       declare_preamble(prm);
       try
         {
-          prm.parse_input(file_name, "", /*skip_undefined=*/true);
+          parse_in_folder(prm, file_name, /*skip_undefined=*/true);
         }
       catch (const std::exception &e)
         {
           throw InputError("Error reading the parameter file '" + file_name +
-                           "':\n" + e.what());
+                           "': " + clean_dealii_message(e.what()));
         }
       return {static_cast<unsigned int>(prm.get_integer("Dimension")),
               static_cast<unsigned int>(prm.get_integer("Number of bodies"))};
@@ -461,20 +498,12 @@ namespace mpm
         throw InputError("Cannot open the parameter file '" + file_name + "'");
       try
         {
-          prm.parse_input(file_name, "", /*skip_undefined=*/false, true);
+          parse_in_folder(prm, file_name, /*skip_undefined=*/false);
         }
       catch (const std::exception &e)
         {
-          // deal.II's message names the file and line; strip its
-          // boilerplate so the user sees one clear paragraph.
-          std::string msg = e.what();
-          const auto  pos = msg.find("Additional information:");
-          if (pos != std::string::npos)
-            msg = msg.substr(pos + 23);
-          while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
-            msg.pop_back();
-          while (!msg.empty() && (msg.front() == '\n' || msg.front() == ' '))
-            msg.erase(0, 1);
+          // deal.II's message names the file and line.
+          const std::string msg = clean_dealii_message(e.what());
           throw InputError("Error in the parameter file '" + file_name +
                            "':\n    " + msg);
         }

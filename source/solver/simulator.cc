@@ -141,8 +141,8 @@ namespace mpm
         removed_mass += m;
         std::ostringstream s;
         s << "particle " << p->get_id() << " (body "
-          << p->get_properties()[L::body] << ") left the grid at step "
-          << current_step << ", t = " << current_time << ", position ("
+          << p->get_properties()[L::body] << ") left the grid in step "
+          << current_step + 1 << ", position ("
           << p->get_location() << ")";
         lost_messages.push_back(s.str());
       });

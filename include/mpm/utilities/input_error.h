@@ -19,6 +19,33 @@ namespace mpm
   };
 
   /**
+   * The useful part of a deal.II exception text: what follows
+   * "Additional information:", without the stack trace, on one paragraph.
+   */
+  inline std::string
+  clean_dealii_message(std::string msg)
+  {
+    const auto info = msg.find("Additional information:");
+    if (info != std::string::npos)
+      msg = msg.substr(info + 23);
+    const auto trace = msg.find("Stacktrace:");
+    if (trace != std::string::npos)
+      msg = msg.substr(0, trace);
+    std::string out;
+    for (const char c : msg)
+      if (c == '\n' || c == ' ')
+        {
+          if (!out.empty() && out.back() != ' ')
+            out += ' ';
+        }
+      else
+        out += c;
+    while (!out.empty() && out.back() == ' ')
+      out.pop_back();
+    return out;
+  }
+
+  /**
    * An error found while the simulation runs (NaN, a particle outside the
    * grid). Output written so far is kept; main() exits with status 2.
    */

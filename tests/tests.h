@@ -1,0 +1,75 @@
+// Helpers for the .cc tests: run a case given as parameter-file text and
+// print rounded, rank-independent results to the file "output" that the
+// deal.II test scripts compare.
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpm/parameters/parameters.h>
+#include <mpm/solver/simulator.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace mpm_test
+{
+  /// A simulator built from parameter-file text (all entries declared).
+  template <int dim>
+  struct Case
+  {
+    dealii::ParameterHandler                 prm;
+    mpm::Parameters::AllParameters<dim>      parameters;
+    std::unique_ptr<mpm::Simulator<dim>>     simulator;
+
+    Case(const std::string &text, const unsigned int n_bodies = 1)
+    {
+      mpm::Parameters::AllParameters<dim>::declare_parameters(prm, n_bodies);
+      prm.parse_input_from_string("set Dimension = " + std::to_string(dim) +
+                                  "\n" + text);
+      parameters.file_name = "test.prm";
+      parameters.parse_parameters(prm);
+      simulator = std::make_unique<mpm::Simulator<dim>>(parameters, prm,
+                                                        MPI_COMM_WORLD);
+      simulator->setup();
+    }
+  };
+
+  /// Output stream that writes on rank 0 only.
+  inline std::ofstream &
+  log()
+  {
+    static std::ofstream out(
+      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
+        "output" :
+        "/dev/null");
+    return out;
+  }
+
+  /// Print a check line and fail the test (exit 1) if it does not hold.
+  inline void
+  check(const bool ok, const std::string &what, const double value,
+        const double bound)
+  {
+    log() << (ok ? "OK   " : "FAIL ") << what << ": " << std::scientific
+          << std::setprecision(2) << value << " (bound " << bound << ")"
+          << std::endl;
+    if (!ok)
+      {
+        std::cerr << "FAIL " << what << ": " << value << " (bound " << bound
+                  << ")" << std::endl;
+        std::exit(1);
+      }
+  }
+
+  /// check(|value| <= bound)
+  inline void
+  check_small(const std::string &what, const double value, const double bound)
+  {
+    check(std::abs(value) <= bound, what, std::abs(value), bound);
+  }
+} // namespace mpm_test
