@@ -2,7 +2,6 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_cartesian.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
@@ -219,12 +218,27 @@ namespace mpm
   std::vector<std::vector<BoundingBox<dim>>>
   BackgroundGrid<dim>::global_bounding_boxes() const
   {
-    std::function<bool(const typename Triangulation<dim>::active_cell_iterator &)>
-      owned = [](const typename Triangulation<dim>::active_cell_iterator &c) {
-        return c->is_locally_owned();
-      };
-    const auto local =
-      GridTools::compute_mesh_predicate_bounding_box(*tria, owned, 1, true, 4);
+    // One box around the owned cells per rank. (deal.II 9.4's
+    // compute_mesh_predicate_bounding_box crashes on unrefined coarse
+    // meshes.) Overlapping boxes only cost extra messages at set-up:
+    // the owner is decided by the cells themselves.
+    std::vector<BoundingBox<dim>> local;
+    Point<dim> lo, hi;
+    bool       first = true;
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const Point<dim> &x = cell->vertex(v);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lo[d] = first ? x[d] : std::min(lo[d], x[d]);
+                hi[d] = first ? x[d] : std::max(hi[d], x[d]);
+              }
+            first = false;
+          }
+    if (!first)
+      local.emplace_back(std::make_pair(lo, hi));
     return Utilities::MPI::all_gather(comm, local);
   }
 

@@ -290,7 +290,7 @@ namespace mpm
                         "2",
                         Patterns::Integer(0, 10),
                         "Ball: global refinements of the coarse ball mesh "
-                        "(5 cells in 2D, 7 in 3D).");
+                        "(12 cells in 2D, 32 in 3D).");
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::FileName(),

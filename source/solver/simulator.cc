@@ -67,7 +67,8 @@ namespace mpm
     min_nodal_mass = 1e-12 * s.mass / std::max<double>(1, s.n_particles);
 
     stable_dt = ::mpm::stable_time_step(background, particle_handler, bodies);
-    const double limit = stable_time_step();
+    stable_dt = stable_time_step(); // the first step needs the global value
+    const double limit = stable_dt;
     if (params.time.step_control ==
           Parameters::TimeStepping::StepControl::fixed &&
         params.time.time_step > limit)
@@ -205,8 +206,11 @@ namespace mpm
           particle_handler.insert_global_particles(positions, boxes, properties, ids);
 
         // Particles that no rank's grid contains: the body sticks out.
-        IndexSet located(seeds.size());
-        for (const auto &f : found)
+        // `found` tells each owner which points of which sender it took;
+        // send that back so every rank learns which of its points landed.
+        const auto landed = Utilities::MPI::some_to_some(comm, found);
+        IndexSet   located(seeds.size());
+        for (const auto &f : landed)
           located.add_indices(f.second);
         std::string outside;
         for (unsigned int i = 0; i < seeds.size(); ++i)
@@ -416,8 +420,12 @@ namespace mpm
             current_time >= end - tiny)
           {
             write_output();
-            while (next_output_time <= current_time + 1e-9 * dt)
-              next_output_time += std::max(out.interval, 1e-300);
+            // next multiple of the interval (Interval = 0: every step)
+            next_output_time =
+              out.interval > 0 ?
+                out.interval *
+                  (std::floor(current_time / out.interval + 1e-9) + 1) :
+                current_time;
           }
         print_progress(false);
       }

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <mpm/benchmarks/benchmark.h>
+#include <mpm/benchmarks/spinning_disk.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/utilities/input_error.h>
 
@@ -98,8 +99,19 @@ namespace mpm
         return nullptr;
       if (name == "axial bar")
         return std::make_unique<AxialBar<dim>>(constants);
+      if (name == "spinning disk")
+        {
+          if constexpr (dim == 2)
+            return std::make_unique<SpinningDisk<dim>>(
+              constant(constants, "a", name),
+              constant(constants, "omega", name),
+              constant(constants, "nu", name),
+              constant(constants, "rho", name));
+          else
+            throw InputError("Benchmark = spinning disk needs Dimension = 2");
+        }
       throw InputError("Benchmark = '" + name +
-                       "' is unknown; known: none, axial bar");
+                       "' is unknown; known: none, axial bar, spinning disk");
     }
 
     template std::unique_ptr<Benchmark<1>>
