@@ -7,6 +7,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <mpm/grid/background_grid.h>
+#include <mpm/grid/box_mesh.h>
 #include <mpm/grid/mesh_reader.h>
 #include <mpm/utilities/input_error.h>
 
@@ -30,7 +31,7 @@ namespace mpm
     else
       tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
         comm,
-        Triangulation<dim>::maximum_smoothing,
+        Triangulation<dim>::limit_level_difference_at_vertices,
         parallel::distributed::Triangulation<dim>::default_setting);
   }
 
@@ -40,8 +41,7 @@ namespace mpm
                               const std::string &          input_folder)
   {
     if (prm.type == Parameters::Grid<dim>::Type::hyper_rectangle)
-      GridGenerator::subdivided_hyper_rectangle(
-        *tria, prm.subdivisions, prm.lower, prm.upper, /*colorize=*/true);
+      create_box_mesh(*tria, prm.subdivisions, prm.lower, prm.upper);
     else
       read_mesh(*tria, prm.mesh_file, input_folder, "Grid/Mesh file");
     if (prm.global_refinements > 0)
@@ -215,31 +215,141 @@ namespace mpm
   }
 
   template <int dim>
-  std::vector<std::vector<BoundingBox<dim>>>
-  BackgroundGrid<dim>::global_bounding_boxes() const
+  std::pair<Point<dim>, Point<dim>>
+  BackgroundGrid<dim>::owned_bounding_box() const
   {
-    // One box around the owned cells per rank. (deal.II 9.4's
-    // compute_mesh_predicate_bounding_box crashes on unrefined coarse
-    // meshes.) Overlapping boxes only cost extra messages at set-up:
-    // the owner is decided by the cells themselves.
-    std::vector<BoundingBox<dim>> local;
     Point<dim> lo, hi;
-    bool       first = true;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lo[d] = std::numeric_limits<double>::max();
+        hi[d] = -std::numeric_limits<double>::max();
+      }
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lo[d] = std::min(lo[d], cell->vertex(v)[d]);
+              hi[d] = std::max(hi[d], cell->vertex(v)[d]);
+            }
+    return {lo, hi};
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::locate_in_owned_cells(
+    const std::vector<Point<dim>> &                                points,
+    std::vector<typename Triangulation<dim>::active_cell_iterator> &cells,
+    std::vector<Point<dim>> &reference_points) const
+  {
+    using Iterator = typename Triangulation<dim>::active_cell_iterator;
+    cells.assign(points.size(), tria->end_active(tria->n_levels() - 1));
+    reference_points.assign(points.size(), Point<dim>());
+    const auto [lo, hi] = owned_bounding_box();
+    if (!(lo[0] <= hi[0]))
+      return;
+
+    // Bucket lattice with about one bucket per owned cell.
+    std::vector<Iterator> owned;
+    double                max_extent = 0;
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          owned.push_back(cell);
+          for (unsigned int d = 0; d < dim; ++d)
+            max_extent = std::max(
+              max_extent, cell->bounding_box().side_length(d));
+        }
+    double volume = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      volume *= std::max(hi[d] - lo[d], 1e-300);
+    const double size =
+      std::max(max_extent, std::pow(volume / owned.size(), 1. / dim));
+    std::array<unsigned int, dim> n;
+    for (unsigned int d = 0; d < dim; ++d)
+      n[d] = std::max(1u, static_cast<unsigned int>((hi[d] - lo[d]) / size) + 1);
+    auto bucket_of = [&](const Point<dim> &x, const bool clamp) -> long {
+      long index = 0, stride = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          long i = static_cast<long>(std::floor((x[d] - lo[d]) / size));
+          if (clamp)
+            i = std::min<long>(std::max<long>(i, 0), n[d] - 1);
+          else if (i < 0 || i >= long(n[d]))
+            return -1;
+          index += i * stride;
+          stride *= n[d];
+        }
+      return index;
+    };
+    long n_buckets = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_buckets *= n[d];
+    std::vector<std::vector<unsigned int>> buckets(n_buckets);
+    for (unsigned int c = 0; c < owned.size(); ++c)
+      {
+        const auto box = owned[c]->bounding_box();
+        std::array<long, dim> first, last;
+        for (unsigned int d = 0; d < dim; ++d)
           {
-            const Point<dim> &x = cell->vertex(v);
+            first[d] = std::max<long>(0, std::floor((box.get_boundary_points().first[d] - lo[d]) / size));
+            last[d]  = std::min<long>(n[d] - 1, std::floor((box.get_boundary_points().second[d] - lo[d]) / size));
+          }
+        // all buckets in [first, last]
+        std::array<long, dim> i = first;
+        while (true)
+          {
+            long index = 0, stride = 1;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                lo[d] = first ? x[d] : std::min(lo[d], x[d]);
-                hi[d] = first ? x[d] : std::max(hi[d], x[d]);
+                index += i[d] * stride;
+                stride *= n[d];
               }
-            first = false;
+            buckets[index].push_back(c);
+            unsigned int d = 0;
+            for (; d < dim; ++d)
+              {
+                if (++i[d] <= last[d])
+                  break;
+                i[d] = first[d];
+              }
+            if (d == dim)
+              break;
           }
-    if (!first)
-      local.emplace_back(std::make_pair(lo, hi));
-    return Utilities::MPI::all_gather(comm, local);
+      }
+
+    // Tie-break for points on faces: test a slightly shifted point with
+    // half-open intervals.
+    Tensor<1, dim> shift;
+    for (unsigned int d = 0; d < dim; ++d)
+      shift[d] = 1e-9 * size * (1. - 0.3 * d);
+    Point<dim> centre;
+    for (unsigned int d = 0; d < dim; ++d)
+      centre[d] = 0.5;
+    for (std::size_t p = 0; p < points.size(); ++p)
+      {
+        const Point<dim> x = points[p] + shift;
+        const long       b = bucket_of(x, false);
+        if (b < 0)
+          continue;
+        for (const unsigned int c : buckets[b])
+          {
+            const auto &geo = cell_geometry[owned[c]->active_cell_index()];
+            const Point<dim> xi = geo.inverse_map(x, centre);
+            bool inside = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              inside = inside && xi[d] >= 0. && xi[d] < 1.;
+            if (inside)
+              {
+                cells[p] = owned[c];
+                Point<dim> xi0 = geo.inverse_map(points[p], xi);
+                for (unsigned int d = 0; d < dim; ++d)
+                  xi0[d] = std::min(1., std::max(0., xi0[d]));
+                reference_points[p] = xi0;
+                break;
+              }
+          }
+      }
   }
 
   template class BackgroundGrid<1>;

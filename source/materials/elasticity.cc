@@ -146,8 +146,15 @@ namespace mpm
         const Tensor<2, 3> half_spin =
           0.25 * dt *
           (velocity_gradient - dealii::transpose(velocity_gradient));
-        const Tensor<2, 3> identity = dealii::unit_symmetric_tensor<3>();
-        return dealii::invert(identity - half_spin) * (identity + half_spin);
+        // Closed form of the Cayley transform (I - A)^-1 (I + A) for a skew
+        // A with axial vector a: I + 2 (A + A^2) / (1 + |a|^2).
+        const double a2 = half_spin[0][1] * half_spin[0][1] +
+                          half_spin[0][2] * half_spin[0][2] +
+                          half_spin[1][2] * half_spin[1][2];
+        Tensor<2, 3> R = (2. / (1. + a2)) * (half_spin + half_spin * half_spin);
+        for (unsigned int i = 0; i < 3; ++i)
+          R[i][i] += 1.;
+        return R;
       }
 
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <mpm/grid/box_mesh.h>
 #include <mpm/grid/mesh_reader.h>
 #include <mpm/particles/body.h>
 #include <mpm/shape_functions/q1_cell.h>
@@ -47,8 +48,7 @@ namespace mpm
     switch (prm.geometry)
       {
         case G::box:
-          GridGenerator::subdivided_hyper_rectangle(
-            mesh, prm.subdivisions, prm.lower, prm.upper, true);
+          create_box_mesh(mesh, prm.subdivisions, prm.lower, prm.upper);
           break;
         case G::ball:
           if constexpr (dim == 1)
@@ -76,7 +76,7 @@ namespace mpm
                    const unsigned int                     n,
                    const std::vector<types::boundary_id> &traction_ids,
                    const unsigned int                     first_cell,
-                   const unsigned int                     stride,
+                   const unsigned int                     end_cell,
                    std::vector<ParticleSeed<dim>> &       seeds,
                    std::vector<unsigned long long> &      seed_ids)
   {
@@ -90,8 +90,10 @@ namespace mpm
     for (const auto &cell : mesh.active_cell_iterators())
       {
         const unsigned int this_cell = cell_index++;
-        if (this_cell < first_cell || (this_cell - first_cell) % stride != 0)
+        if (this_cell < first_cell)
           continue;
+        if (this_cell >= end_cell)
+          break;
         std::array<Point<dim>, Cell::n_vertices> v;
         for (unsigned int i = 0; i < Cell::n_vertices; ++i)
           v[i] = cell->vertex(i);

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm/grid/grid_update.h>
+#include <mpm/particles/particle_relocation.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
@@ -129,6 +130,45 @@ namespace mpm
 
   template <int dim>
   void
+  Simulator<dim>::initial_properties(const Body<dim> &         body,
+                                     const ParticleSeed<dim> &s,
+                                     const double              rho,
+                                     std::vector<double> &     p) const
+  {
+    using L = ParticleLayout<dim>;
+    p.assign(layout.n_properties(), 0.);
+    p[L::mass]    = rho * s.volume;
+    p[L::volume0] = s.volume;
+    p[L::volume]  = s.volume;
+    p[L::body]    = body.index;
+    body.initial_velocity.value(s.position, 0., &p[L::velocity]);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        p[L::X + d]           = s.position[d];
+        p[L::F + d * dim + d] = 1.;
+        for (unsigned int e = 0; e < dim; ++e)
+          p[L::domain + d * dim + e] = s.domain[d][e];
+      }
+    p[L::traction_area] = s.traction_area;
+    // user order: 1D xx; 2D xx yy xy [zz]; 3D xx yy zz yz xz xy
+    double sigma[6] = {};
+    body.initial_stress.value(s.position, 0., sigma);
+    double *out = &p[L::stress];
+    if (dim == 1)
+      out[0] = sigma[0];
+    else if (dim == 2)
+      {
+        out[0] = sigma[0];
+        out[1] = sigma[1];
+        out[5] = sigma[2];
+        out[2] = body.initial_stress.n_components() == 4 ? sigma[3] : 0.;
+      }
+    else
+      std::copy(sigma, sigma + 6, out);
+  }
+
+  template <int dim>
+  void
   Simulator<dim>::create_particles()
   {
     using L = ParticleLayout<dim>;
@@ -148,87 +188,93 @@ namespace mpm
         lost_messages.push_back(s.str());
       });
 
-    const auto         boxes  = background.global_bounding_boxes();
-    const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
     types::particle_index id_offset = 0;
     for (const auto &body : bodies)
       {
         const std::string  where = "Bodies/" + Parameters::body_section(body.index);
         Triangulation<dim> mesh;
         create_body_mesh(mesh, body.prm, input_folder, where);
-        const unsigned int n = body.prm.particles_per_direction;
-        std::vector<ParticleSeed<dim>>  seeds;
-        std::vector<unsigned long long> seed_ids;
-        split_body_cells(mesh, n, body.prm.traction_boundary_ids, rank, nranks,
-                         seeds, seed_ids);
-
-        std::vector<Point<dim>>            positions(seeds.size());
-        std::vector<std::vector<double>>   properties(seeds.size());
-        std::vector<types::particle_index> ids(seeds.size());
+        const unsigned int n       = body.prm.particles_per_direction;
+        const unsigned int n_cells = mesh.n_active_cells();
+        const unsigned long long expected =
+          static_cast<unsigned long long>(n_cells) * Utilities::fixed_power<dim>(n);
         const double rho = body.material->reference_density();
-        for (unsigned int i = 0; i < seeds.size(); ++i)
-          {
-            const auto &s = seeds[i];
-            positions[i]  = s.position;
-            ids[i]        = id_offset + seed_ids[i];
-            auto &p       = properties[i];
-            p.assign(layout.n_properties(), 0.);
-            p[L::mass]    = rho * s.volume;
-            p[L::volume0] = s.volume;
-            p[L::volume]  = s.volume;
-            p[L::body]    = body.index;
-            body.initial_velocity.value(s.position, 0., &p[L::velocity]);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                p[L::X + d]               = s.position[d];
-                p[L::F + d * dim + d]     = 1.;
-                for (unsigned int e = 0; e < dim; ++e)
-                  p[L::domain + d * dim + e] = s.domain[d][e];
-              }
-            p[L::traction_area] = s.traction_area;
-            double sigma[6] = {};
-            body.initial_stress.value(s.position, 0., sigma);
-            double *out = &p[L::stress];
-            if (dim == 1)
-              out[0] = sigma[0];
-            else if (dim == 2)
-              {
-                out[0] = sigma[0];
-                out[1] = sigma[1];
-                out[5] = sigma[2];
-                out[2] = body.initial_stress.n_components() == 4 ? sigma[3] : 0.;
-              }
-            else
-              std::copy(sigma, sigma + 6, out);
-          }
-        const auto found =
-          particle_handler.insert_global_particles(positions, boxes, properties, ids);
 
-        // Particles that no rank's grid contains: the body sticks out.
-        // `found` tells each owner which points of which sender it took;
-        // send that back so every rank learns which of its points landed.
-        const auto landed = Utilities::MPI::some_to_some(comm, found);
-        IndexSet   located(seeds.size());
-        for (const auto &f : landed)
-          located.add_indices(f.second);
-        std::string outside;
-        for (unsigned int i = 0; i < seeds.size(); ++i)
-          if (!located.is_element(i))
+        // Every rank walks the whole body mesh in chunks and keeps the
+        // particles its owned cells contain (points on faces between
+        // ranks go to exactly one of them).
+        auto for_each_chunk = [&](const auto &work) {
+          const unsigned int cells_per_chunk = 16384;
+          for (unsigned int first = 0; first < n_cells; first += cells_per_chunk)
             {
-              std::ostringstream s;
-              s << where << ": the particle at (" << positions[i]
-                << ") lies outside the background grid; every body must be "
-                << "inside the grid (check Grid/Lower corner, Upper corner "
-                << "and the body geometry)";
-              outside = s.str();
-              break;
+              std::vector<ParticleSeed<dim>>  seeds;
+              std::vector<unsigned long long> seed_ids;
+              split_body_cells(mesh, n, body.prm.traction_boundary_ids, first,
+                               std::min(n_cells, first + cells_per_chunk),
+                               seeds, seed_ids);
+              std::vector<Point<dim>> positions(seeds.size()), xi;
+              for (std::size_t i = 0; i < seeds.size(); ++i)
+                positions[i] = seeds[i].position;
+              std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+              background.locate_in_owned_cells(positions, cells, xi);
+              work(seeds, seed_ids, cells, xi);
             }
-        const unsigned int bad_rank = Utilities::MPI::min(
-          outside.empty() ? nranks : rank, comm);
-        if (bad_rank < nranks)
-          throw InputError(Utilities::MPI::broadcast(comm, outside, bad_rank));
-        id_offset += mesh.n_active_cells() * Utilities::fixed_power<dim>(n);
+        };
+        const auto end_cell = background.triangulation().end_active(
+          background.triangulation().n_levels() - 1);
+        unsigned long long inserted = 0;
+        std::vector<double> properties;
+        for_each_chunk([&](const auto &seeds, const auto &seed_ids,
+                           const auto &cells, const auto &xi) {
+          // Insert in cell order: the particle data then lie in memory in
+          // the order the cell-by-cell loops visit them.
+          std::vector<std::size_t> order;
+          for (std::size_t i = 0; i < seeds.size(); ++i)
+            if (cells[i] != end_cell)
+              order.push_back(i);
+          std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
+            return cells[a]->active_cell_index() < cells[b]->active_cell_index();
+          });
+          for (const std::size_t i : order)
+              {
+                initial_properties(body, seeds[i], rho, properties);
+                particle_handler.insert_particle(seeds[i].position, xi[i],
+                                                 id_offset + seed_ids[i],
+                                                 cells[i],
+                                                 ArrayView<const double>(properties));
+                ++inserted;
+              }
+        });
+
+        if (Utilities::MPI::sum(inserted, comm) != expected)
+          {
+            // Name the first particle no rank took: the body sticks out.
+            std::string outside;
+            for_each_chunk([&](const auto &seeds, const auto &,
+                               const auto &cells, const auto &) {
+              if (!outside.empty())
+                return;
+              std::vector<unsigned int> mine(seeds.size()), any(seeds.size());
+              for (std::size_t i = 0; i < seeds.size(); ++i)
+                mine[i] = cells[i] != end_cell;
+              Utilities::MPI::max(mine, comm, any);
+              for (std::size_t i = 0; i < seeds.size() && outside.empty(); ++i)
+                if (!any[i])
+                  {
+                    std::ostringstream s;
+                    s << where << ": the particle at (" << seeds[i].position
+                      << ") lies outside the background grid; every body must "
+                      << "be inside the grid (check Grid/Lower corner, Upper "
+                      << "corner and the body geometry)";
+                    outside = s.str();
+                  }
+            });
+            throw InputError(outside.empty() ?
+                               where + ": particles were placed twice or lost "
+                                       "at set-up (please report this)" :
+                               outside);
+          }
+        id_offset += expected;
       }
     particle_handler.update_cached_numbers();
   }
@@ -337,7 +383,8 @@ namespace mpm
   {
     TimerOutput::Scope t(timer, "position update");
     lost_messages.clear();
-    particle_handler.sort_particles_into_subdomains_and_cells();
+    if (!relocate_particles(background, particle_handler, comm))
+      particle_handler.sort_particles_into_subdomains_and_cells();
     if (!lost_messages.empty() && !params.boundary.remove_lost_particles &&
         local_error.empty())
       local_error = lost_messages.front() +
@@ -440,7 +487,25 @@ namespace mpm
           s << r << '\n';
         write_file_atomically(out.test_summary, s.str());
       }
+    print_memory();
     timer.print_summary();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::print_memory()
+  {
+    Utilities::System::MemoryStats m;
+    Utilities::System::get_memory_stats(m);
+    const double peak = Utilities::MPI::sum(double(m.VmHWM) * 1024., comm);
+    const double n    = std::max<double>(1, particle_handler.n_global_particles());
+    const double grid = Utilities::MPI::sum(
+      double(background.triangulation().memory_consumption() +
+             background.dof_handler().memory_consumption()),
+      comm);
+    pcout << "  memory: peak " << peak / 1048576. << " MB over all ranks = "
+          << peak / n / 1024. << " KB per particle (triangulation and nodes "
+          << grid / 1048576. << " MB)" << std::endl;
   }
 
   template <int dim>
@@ -466,6 +531,7 @@ namespace mpm
   Simulator<dim>::write_output()
   {
     TimerOutput::Scope t(timer, "output");
+    particle_handler.update_cached_numbers();
     const auto &out   = params.output;
     const auto  stats = statistics();
     const auto  extra = benchmark_values();

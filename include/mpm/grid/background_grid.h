@@ -150,10 +150,25 @@ namespace mpm
       return dofs.n_dofs();
     }
 
-    /// Bounding boxes of the owned part of every rank (for inserting
-    /// particles anywhere in the distributed grid).
-    std::vector<std::vector<dealii::BoundingBox<dim>>>
-    global_bounding_boxes() const;
+
+    /**
+     * Set-up helper: for each point, the owned cell that contains it and
+     * the reference coordinates there, or an end iterator if no owned cell
+     * does. A point on a face between cells is given to exactly one of
+     * them (the test uses the point shifted by a tiny fixed offset), so
+     * ranks never both claim it. Uses a temporary bucket lattice over the
+     * owned cells: O(1) per point.
+     */
+    void
+    locate_in_owned_cells(
+      const std::vector<dealii::Point<dim>> &points,
+      std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
+        &                               cells,
+      std::vector<dealii::Point<dim>> & reference_points) const;
+
+    /// Bounding box of the owned cells of this rank (empty: lower > upper).
+    std::pair<dealii::Point<dim>, dealii::Point<dim>>
+    owned_bounding_box() const;
 
     /// The scalar partitioner (one entry per node).
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner>

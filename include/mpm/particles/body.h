@@ -99,8 +99,8 @@ namespace mpm
 
   /**
    * Split body cells into n^dim sub-cells (in the cell's reference
-   * coordinates) and return one seed per sub-cell, for the cells
-   * first_cell, first_cell + stride, ... (so that ranks share the work).
+   * coordinates) and return one seed per sub-cell, for the cells with
+   * index in [first_cell, end_cell) (so that set-up can go in chunks).
    * seed_ids receive cell_index * n^dim + sub-cell index.
    */
   template <int dim>
@@ -109,7 +109,7 @@ namespace mpm
                    const unsigned int                       n,
                    const std::vector<dealii::types::boundary_id> &traction_ids,
                    const unsigned int                       first_cell,
-                   const unsigned int                       stride,
+                   const unsigned int                       end_cell,
                    std::vector<ParticleSeed<dim>> &         seeds,
                    std::vector<unsigned long long> &        seed_ids);
 } // namespace mpm

@@ -124,6 +124,44 @@ namespace mpm
           }
       }
 
+      /**
+       * Reference coordinates of the physical point x: direct on boxes,
+       * Newton iterations from @p start otherwise (a few for any
+       * reasonable cell). Points far outside may not converge; the result
+       * then lies outside [0,1]^dim, which is all callers need to know.
+       */
+      Point<dim>
+      inverse_map(const Point<dim> &x, const Point<dim> &start) const
+      {
+        Point<dim> xi;
+        if (is_box)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              xi[d] = (x[d] - vertices[0][d]) * inverse_extent[d];
+            return xi;
+          }
+        xi = start;
+        for (unsigned int it = 0; it < 12; ++it)
+          {
+            const Tensor<1, dim> r = map(xi) - x;
+            const Tensor<1, dim> step = dealii::invert(jacobian(xi)) * r;
+            xi -= step;
+            if (step.norm_square() < 1e-28)
+              break;
+          }
+        return xi;
+      }
+
+      /// Whether xi lies in the closed unit cell (up to round-off).
+      static bool
+      is_inside(const Point<dim> &xi)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(xi[d] >= -1e-12 && xi[d] <= 1. + 1e-12))
+            return false;
+        return true;
+      }
+
       /// Position of the reference point xi.
       Point<dim>
       map(const Point<dim> &xi) const

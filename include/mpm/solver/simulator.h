@@ -108,6 +108,11 @@ namespace mpm
     create_bodies();
     void
     create_particles();
+    void
+    initial_properties(const Body<dim> &         body,
+                       const ParticleSeed<dim> &seed,
+                       const double              rho,
+                       std::vector<double> &     properties) const;
 
     // Output pieces.
     void
@@ -116,6 +121,8 @@ namespace mpm
     print_header();
     void
     print_progress(const bool force);
+    void
+    print_memory();
 
     /// Throw the same RuntimeError on every rank if any rank found one.
     void

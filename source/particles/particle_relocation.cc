@@ -1,0 +1,180 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/cell_id.h>
+
+#include <mpm/particles/particle_relocation.h>
+
+#include <map>
+#include <vector>
+
+namespace mpm
+{
+  using namespace dealii;
+
+  namespace
+  {
+    template <int dim>
+    using CellIterator = typename Triangulation<dim>::active_cell_iterator;
+
+    /**
+     * Starting from @p cell, walk across the face with the largest
+     * violation of 0 <= xi <= 1 until x lies inside a cell (at most
+     * 2 dim hops). Returns false if the walk leaves the locally known
+     * part of the grid (boundary, artificial or refined neighbour).
+     */
+    template <int dim>
+    bool
+    find_cell(const BackgroundGrid<dim> &grid,
+              CellIterator<dim>          cell,
+              const Point<dim> &         x,
+              Point<dim>                 xi,
+              CellIterator<dim> &        found,
+              Point<dim> &               found_xi)
+    {
+      for (unsigned int hop = 0; hop < 2 * dim; ++hop)
+        {
+          unsigned int face  = numbers::invalid_unsigned_int;
+          double       worst = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              if (-xi[d] > worst)
+                worst = -xi[d], face = 2 * d;
+              if (xi[d] - 1 > worst)
+                worst = xi[d] - 1, face = 2 * d + 1;
+            }
+          if (face == numbers::invalid_unsigned_int)
+            return false;
+          if (cell->at_boundary(face))
+            return false;
+          const auto next = cell->neighbor(face);
+          if (next->has_children() || next->is_artificial())
+            return false;
+          cell = next;
+          xi   = grid.geometry(cell).inverse_map(x, xi);
+          if (shape_functions::Q1Cell<dim>::is_inside(xi))
+            {
+              found    = cell;
+              found_xi = xi;
+              return true;
+            }
+        }
+      return false;
+    }
+
+    /// A particle on its way to another cell: everything to re-insert it.
+    template <int dim>
+    struct Moving
+    {
+      CellIterator<dim>     cell;
+      Point<dim>            x, xi;
+      types::particle_index id;
+      std::vector<double>   properties;
+    };
+  } // namespace
+
+  template <int dim>
+  bool
+  relocate_particles(const BackgroundGrid<dim> &      grid,
+                     Particles::ParticleHandler<dim> &particles,
+                     const MPI_Comm                   comm)
+  {
+    const unsigned int n_props = particles.n_properties_per_particle();
+    std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
+                                          leaving;
+    std::vector<Moving<dim>>              local_moves;
+    std::map<unsigned int, std::vector<double>> to_send;
+    bool                                  unplaced = false;
+
+    for (const auto &cell : grid.triangulation().active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        const auto pic = particles.particles_in_cell(cell);
+        if (pic.begin() == pic.end())
+          continue;
+        const auto &geo = grid.geometry(cell);
+        for (auto it = pic.begin(); it != pic.end(); ++it)
+          {
+            const Point<dim> x  = it->get_location();
+            const Point<dim> xi = geo.inverse_map(x, it->get_reference_location());
+            if (shape_functions::Q1Cell<dim>::is_inside(xi))
+              {
+                it->set_reference_location(xi);
+                continue;
+              }
+            CellIterator<dim> target;
+            Point<dim>        target_xi;
+            if (!find_cell(grid, cell, x, xi, target, target_xi))
+              {
+                unplaced = true;
+                continue;
+              }
+            const auto props = it->get_properties();
+            if (target->is_locally_owned())
+              local_moves.push_back({target, x, target_xi, it->get_id(),
+                                     std::vector<double>(props.begin(), props.end())});
+            else
+              {
+                // Packed as: cell id (binary), id, x, xi, properties.
+                auto &buffer = to_send[target->subdomain_id()];
+                const auto cid = target->id().template to_binary<dim>();
+                for (const auto c : cid)
+                  buffer.push_back(static_cast<double>(c));
+                buffer.push_back(static_cast<double>(it->get_id()));
+                for (unsigned int d = 0; d < dim; ++d)
+                  buffer.push_back(x[d]);
+                for (unsigned int d = 0; d < dim; ++d)
+                  buffer.push_back(target_xi[d]);
+                buffer.insert(buffer.end(), props.begin(), props.end());
+              }
+            leaving.push_back(it);
+          }
+      }
+
+    const bool parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
+    if ((parallel ? Utilities::MPI::max(unplaced ? 1 : 0, comm) : unplaced) != 0)
+      return false;
+
+    particles.remove_particles(leaving);
+    for (const auto &m : local_moves)
+      particles.insert_particle(m.x, m.xi, m.id, m.cell,
+                                ArrayView<const double>(m.properties));
+    if (parallel)
+      {
+        const auto received = Utilities::MPI::some_to_some(comm, to_send);
+        using Binary        = CellId::binary_type;
+        const unsigned int n_cid   = std::tuple_size<Binary>::value;
+        const unsigned int n_entry = n_cid + 1 + 2 * dim + n_props;
+        for (const auto &[rank, buffer] : received)
+          for (std::size_t i = 0; i < buffer.size(); i += n_entry)
+            {
+              Binary cid;
+              for (unsigned int c = 0; c < n_cid; ++c)
+                cid[c] = static_cast<typename Binary::value_type>(buffer[i + c]);
+              const auto cell =
+                grid.triangulation().create_cell_iterator(CellId(cid));
+              const auto       id = static_cast<types::particle_index>(buffer[i + n_cid]);
+              Point<dim> x, xi;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  x[d]  = buffer[i + n_cid + 1 + d];
+                  xi[d] = buffer[i + n_cid + 1 + dim + d];
+                }
+              particles.insert_particle(
+                x, xi, id,
+                typename Triangulation<dim>::active_cell_iterator(cell),
+                ArrayView<const double>(&buffer[i + n_cid + 1 + 2 * dim], n_props));
+            }
+      }
+    return true;
+  }
+
+  template bool
+  relocate_particles<1>(const BackgroundGrid<1> &, Particles::ParticleHandler<1> &,
+                        MPI_Comm);
+  template bool
+  relocate_particles<2>(const BackgroundGrid<2> &, Particles::ParticleHandler<2> &,
+                        MPI_Comm);
+  template bool
+  relocate_particles<3>(const BackgroundGrid<3> &, Particles::ParticleHandler<3> &,
+                        MPI_Comm);
+} // namespace mpm
