@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace mpm
 {
@@ -141,14 +142,19 @@ namespace mpm
             return xi;
           }
         xi = start;
-        for (unsigned int it = 0; it < 12; ++it)
+        for (unsigned int it = 0; it < 20; ++it)
           {
-            const Tensor<1, dim> r = map(xi) - x;
+            const Tensor<1, dim> r    = map(xi) - x;
             const Tensor<1, dim> step = dealii::invert(jacobian(xi)) * r;
             xi -= step;
             if (step.norm_square() < 1e-28)
               break;
           }
+        // Not converged (x far outside, or a fold of the extended map):
+        // say "outside" rather than return a point that does not map to x.
+        const double size = vertices[0].distance(vertices[n_vertices - 1]);
+        if (!(map(xi).distance(x) <= 1e-10 * size))
+          xi[0] = std::numeric_limits<double>::infinity();
         return xi;
       }
 
