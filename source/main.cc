@@ -11,8 +11,7 @@
 #include <iostream>
 #include <string>
 
-namespace
-{
+namespace {
   const char *usage =
     "Usage: mpm [options] FILE.prm\n"
     "       mpirun -np N mpm FILE.prm\n"
@@ -82,7 +81,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool                               root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   std::string file;
   bool        validate = false;
@@ -151,8 +151,8 @@ main(int argc, char **argv)
   catch (const mpm::InputError &e)
     {
       if (root)
-        std::cerr << "mpm: error: " << e.what()
-                  << "\nNothing was written." << std::endl;
+        std::cerr << "mpm: error: " << e.what() << "\nNothing was written."
+                  << std::endl;
       return 1;
     }
   catch (const mpm::RuntimeError &e)

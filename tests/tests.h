@@ -16,15 +16,14 @@
 #include <memory>
 #include <string>
 
-namespace mpm_test
-{
+namespace mpm_test {
   /// A simulator built from parameter-file text (all entries declared).
   template <int dim>
   struct Case
   {
-    dealii::ParameterHandler                 prm;
-    mpm::Parameters::AllParameters<dim>      parameters;
-    std::unique_ptr<mpm::Simulator<dim>>     simulator;
+    dealii::ParameterHandler             prm;
+    mpm::Parameters::AllParameters<dim>  parameters;
+    std::unique_ptr<mpm::Simulator<dim>> simulator;
 
     Case(const std::string &text, const unsigned int n_bodies = 1)
     {
@@ -33,8 +32,8 @@ namespace mpm_test
                                   "\n" + text);
       parameters.file_name = "test.prm";
       parameters.parse_parameters(prm);
-      simulator = std::make_unique<mpm::Simulator<dim>>(parameters, prm,
-                                                        MPI_COMM_WORLD);
+      simulator =
+        std::make_unique<mpm::Simulator<dim>>(parameters, prm, MPI_COMM_WORLD);
       simulator->setup();
     }
   };
@@ -52,8 +51,10 @@ namespace mpm_test
 
   /// Print a check line and fail the test (exit 1) if it does not hold.
   inline void
-  check(const bool ok, const std::string &what, const double value,
-        const double bound)
+  check(const bool         ok,
+        const std::string &what,
+        const double       value,
+        const double       bound)
   {
     log() << (ok ? "OK   " : "FAIL ") << what << ": " << std::scientific
           << std::setprecision(2) << value << " (bound " << bound << ")"

@@ -7,18 +7,15 @@
 
 #include <cmath>
 
-namespace mpm
-{
-  namespace benchmarks
-  {
+namespace mpm {
+  namespace benchmarks {
     using namespace dealii;
 
-    namespace
-    {
+    namespace {
       double
       constant(const std::map<std::string, double> &c,
-               const std::string &                  name,
-               const std::string &                  benchmark)
+               const std::string                   &name,
+               const std::string                   &benchmark)
       {
         const auto it = c.find(name);
         if (it == c.end())
@@ -44,13 +41,13 @@ namespace mpm
         explicit AxialBar(const std::map<std::string, double> &c)
         {
           const std::string n = "axial bar";
-          L     = constant(c, "L", n);
-          E     = constant(c, "E", n);
-          rho   = constant(c, "rho", n);
-          v0    = constant(c, "v0", n);
-          x0    = c.count("x0") ? c.at("x0") : 0.;
-          beta  = M_PI / (2 * L);
-          omega = beta * std::sqrt(E / rho);
+          L                   = constant(c, "L", n);
+          E                   = constant(c, "E", n);
+          rho                 = constant(c, "rho", n);
+          v0                  = constant(c, "v0", n);
+          x0                  = c.count("x0") ? c.at("x0") : 0.;
+          beta                = M_PI / (2 * L);
+          omega               = beta * std::sqrt(E / rho);
         }
 
         std::vector<std::string>
@@ -72,13 +69,14 @@ namespace mpm
               const double  m    = prop[Lay::mass];
               const double  X    = prop[Lay::X] - x0;
               const double  v    = prop[Lay::velocity];
-              const double  ve   = v0 * std::cos(omega * t) * std::sin(beta * X);
+              const double  ve = v0 * std::cos(omega * t) * std::sin(beta * X);
               local[0] += m;
               local[1] += m * v;
               local[2] += m * (v - ve) * (v - ve);
             }
           double g[3];
-          Utilities::MPI::sum(ArrayView<const double>(local, 3), comm,
+          Utilities::MPI::sum(ArrayView<const double>(local, 3),
+                              comm,
                               ArrayView<double>(g, 3));
           return {g[1] / g[0],
                   v0 * std::cos(omega * t) / (beta * L),
@@ -92,7 +90,7 @@ namespace mpm
 
     template <int dim>
     std::unique_ptr<Benchmark<dim>>
-    create_benchmark(const std::string &                  name,
+    create_benchmark(const std::string                   &name,
                      const std::map<std::string, double> &constants)
     {
       if (name == "none" || name.empty())
@@ -115,10 +113,13 @@ namespace mpm
     }
 
     template std::unique_ptr<Benchmark<1>>
-    create_benchmark<1>(const std::string &, const std::map<std::string, double> &);
+    create_benchmark<1>(const std::string &,
+                        const std::map<std::string, double> &);
     template std::unique_ptr<Benchmark<2>>
-    create_benchmark<2>(const std::string &, const std::map<std::string, double> &);
+    create_benchmark<2>(const std::string &,
+                        const std::map<std::string, double> &);
     template std::unique_ptr<Benchmark<3>>
-    create_benchmark<3>(const std::string &, const std::map<std::string, double> &);
+    create_benchmark<3>(const std::string &,
+                        const std::map<std::string, double> &);
   } // namespace benchmarks
 } // namespace mpm

@@ -6,10 +6,8 @@
 
 #include <cmath>
 
-namespace mpm
-{
-  namespace benchmarks
-  {
+namespace mpm {
+  namespace benchmarks {
     using namespace dealii;
 
     template <int dim>
@@ -41,12 +39,12 @@ namespace mpm
       double local[4] = {};
       for (const auto &p : particles)
         {
-          const double *s  = p.get_properties().data() + L::stress;
-          const double *v  = p.get_properties().data() + L::velocity;
-          const double  m  = p.get_properties()[L::mass];
-          const auto    x  = p.get_location();
-          const double  r  = x.norm();
-          const double  c  = r > 0 ? x[0] / r : 1., sn = r > 0 ? x[1] / r : 0.;
+          const double *s = p.get_properties().data() + L::stress;
+          const double *v = p.get_properties().data() + L::velocity;
+          const double  m = p.get_properties()[L::mass];
+          const auto    x = p.get_location();
+          const double  r = x.norm();
+          const double  c = r > 0 ? x[0] / r : 1., sn = r > 0 ? x[1] / r : 0.;
           // polar components of the Cartesian stress (xx yy zz yz xz xy)
           const double srr = c * c * s[0] + sn * sn * s[1] + 2 * c * sn * s[5];
           const double srt = (s[1] - s[0]) * c * sn + (c * c - sn * sn) * s[5];
@@ -59,7 +57,8 @@ namespace mpm
           local[3] += m * vr * vr;
         }
       double g[4];
-      Utilities::MPI::sum(ArrayView<const double>(local, 4), comm,
+      Utilities::MPI::sum(ArrayView<const double>(local, 4),
+                          comm,
                           ArrayView<double>(g, 4));
       return {std::sqrt(g[1] / g[0]) / sigma0,
               std::sqrt(g[2] / g[0]) / sigma0,

@@ -11,8 +11,7 @@
 #include <mpm/grid/mesh_reader.h>
 #include <mpm/utilities/input_error.h>
 
-namespace mpm
-{
+namespace mpm {
   using namespace dealii;
 
   template <int dim>
@@ -38,7 +37,7 @@ namespace mpm
   template <int dim>
   void
   BackgroundGrid<dim>::create(const Parameters::Grid<dim> &prm,
-                              const std::string &          input_folder)
+                              const std::string           &input_folder)
   {
     if (prm.type == Parameters::Grid<dim>::Type::hyper_rectangle)
       create_box_mesh(*tria, prm.subdivisions, prm.lower, prm.upper);
@@ -54,7 +53,7 @@ namespace mpm
   {
     dofs.reinit(*tria);
     dofs.distribute_dofs(fe);
-    const IndexSet owned    = dofs.locally_owned_dofs();
+    const IndexSet owned = dofs.locally_owned_dofs();
     IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(dofs, relevant);
     partitioner =
@@ -78,7 +77,7 @@ namespace mpm
         for (unsigned int i = 0; i < n_vertices; ++i)
           v[i] = cell->vertex(i);
         const double h = cell->minimum_vertex_distance();
-        auto &       g = cell_geometry[cell->active_cell_index()];
+        auto        &g = cell_geometry[cell->active_cell_index()];
         g.reinit(v, 1e-12 * h);
         all_boxes = all_boxes && g.is_box;
 
@@ -88,7 +87,7 @@ namespace mpm
             const unsigned int local =
               partitioner->global_to_local(dof_indices[i]);
             cell_nodes[cell->active_cell_index() * n_vertices + i] = local;
-            node_positions[local]                                   = v[i];
+            node_positions[local]                                  = v[i];
           }
 
         // Smallest height = measure / largest face measure (exact for
@@ -196,15 +195,16 @@ namespace mpm
 
   template <int dim>
   void
-  BackgroundGrid<dim>::initialize_vector(NodalVector &      v,
+  BackgroundGrid<dim>::initialize_vector(NodalVector       &v,
                                          const unsigned int nc) const
   {
     // Owned dofs of one rank are a contiguous range, so the packed
     // numbering keeps owned entries first and ghosts sorted by node.
     const IndexSet &owned_nodes = partitioner->locally_owned_range();
     const IndexSet &ghost_nodes = partitioner->ghost_indices();
-    IndexSet        owned(partitioner->size() * nc), ghost(partitioner->size() * nc);
-    for (auto it = owned_nodes.begin_intervals(); it != owned_nodes.end_intervals();
+    IndexSet owned(partitioner->size() * nc), ghost(partitioner->size() * nc);
+    for (auto it = owned_nodes.begin_intervals();
+         it != owned_nodes.end_intervals();
          ++it)
       owned.add_range(*it->begin() * nc, (it->last() + 1) * nc);
     for (const auto g : ghost_nodes)
@@ -238,7 +238,7 @@ namespace mpm
   template <int dim>
   void
   BackgroundGrid<dim>::locate_in_owned_cells(
-    const std::vector<Point<dim>> &                                points,
+    const std::vector<Point<dim>>                                  &points,
     std::vector<typename Triangulation<dim>::active_cell_iterator> &cells,
     std::vector<Point<dim>> &reference_points) const
   {
@@ -257,8 +257,8 @@ namespace mpm
         {
           owned.push_back(cell);
           for (unsigned int d = 0; d < dim; ++d)
-            max_extent = std::max(
-              max_extent, cell->bounding_box().side_length(d));
+            max_extent =
+              std::max(max_extent, cell->bounding_box().side_length(d));
         }
     double volume = 1;
     for (unsigned int d = 0; d < dim; ++d)
@@ -267,7 +267,8 @@ namespace mpm
       std::max(max_extent, std::pow(volume / owned.size(), 1. / dim));
     std::array<unsigned int, dim> n;
     for (unsigned int d = 0; d < dim; ++d)
-      n[d] = std::max(1u, static_cast<unsigned int>((hi[d] - lo[d]) / size) + 1);
+      n[d] =
+        std::max(1u, static_cast<unsigned int>((hi[d] - lo[d]) / size) + 1);
     auto bucket_of = [&](const Point<dim> &x, const bool clamp) -> long {
       long index = 0, stride = 1;
       for (unsigned int d = 0; d < dim; ++d)
@@ -288,12 +289,16 @@ namespace mpm
     std::vector<std::vector<unsigned int>> buckets(n_buckets);
     for (unsigned int c = 0; c < owned.size(); ++c)
       {
-        const auto box = owned[c]->bounding_box();
+        const auto            box = owned[c]->bounding_box();
         std::array<long, dim> first, last;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            first[d] = std::max<long>(0, std::floor((box.get_boundary_points().first[d] - lo[d]) / size));
-            last[d]  = std::min<long>(n[d] - 1, std::floor((box.get_boundary_points().second[d] - lo[d]) / size));
+            first[d] = std::max<long>(
+              0,
+              std::floor((box.get_boundary_points().first[d] - lo[d]) / size));
+            last[d] = std::min<long>(
+              n[d] - 1,
+              std::floor((box.get_boundary_points().second[d] - lo[d]) / size));
           }
         // all buckets in [first, last]
         std::array<long, dim> i = first;
@@ -334,14 +339,14 @@ namespace mpm
           continue;
         for (const unsigned int c : buckets[b])
           {
-            const auto &geo = cell_geometry[owned[c]->active_cell_index()];
-            const Point<dim> xi = geo.inverse_map(x, centre);
-            bool inside = true;
+            const auto      &geo = cell_geometry[owned[c]->active_cell_index()];
+            const Point<dim> xi  = geo.inverse_map(x, centre);
+            bool             inside = true;
             for (unsigned int d = 0; d < dim; ++d)
               inside = inside && xi[d] >= 0. && xi[d] < 1.;
             if (inside)
               {
-                cells[p] = owned[c];
+                cells[p]       = owned[c];
                 Point<dim> xi0 = geo.inverse_map(points[p], xi);
                 for (unsigned int d = 0; d < dim; ++d)
                   xi0[d] = std::min(1., std::max(0., xi0[d]));

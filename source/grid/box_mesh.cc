@@ -2,14 +2,13 @@
 
 #include <mpm/grid/box_mesh.h>
 
-namespace mpm
-{
+namespace mpm {
   template <int dim>
   void
-  create_box_mesh(dealii::Triangulation<dim> &     tria,
+  create_box_mesh(dealii::Triangulation<dim>      &tria,
                   const std::vector<unsigned int> &cells,
-                  const dealii::Point<dim> &       lower,
-                  const dealii::Point<dim> &       upper)
+                  const dealii::Point<dim>        &lower,
+                  const dealii::Point<dim>        &upper)
   {
     // Largest k such that 2^k divides every direction's cell count.
     unsigned int k = 0;
@@ -25,19 +24,25 @@ namespace mpm
     std::vector<unsigned int> coarse(cells);
     for (auto &n : coarse)
       n >>= k;
-    dealii::GridGenerator::subdivided_hyper_rectangle(tria, coarse, lower,
-                                                      upper, true);
+    dealii::GridGenerator::subdivided_hyper_rectangle(
+      tria, coarse, lower, upper, true);
     if (k > 0)
       tria.refine_global(k);
   }
 
   template void
-  create_box_mesh<1>(dealii::Triangulation<1> &, const std::vector<unsigned int> &,
-                     const dealii::Point<1> &, const dealii::Point<1> &);
+  create_box_mesh<1>(dealii::Triangulation<1> &,
+                     const std::vector<unsigned int> &,
+                     const dealii::Point<1> &,
+                     const dealii::Point<1> &);
   template void
-  create_box_mesh<2>(dealii::Triangulation<2> &, const std::vector<unsigned int> &,
-                     const dealii::Point<2> &, const dealii::Point<2> &);
+  create_box_mesh<2>(dealii::Triangulation<2> &,
+                     const std::vector<unsigned int> &,
+                     const dealii::Point<2> &,
+                     const dealii::Point<2> &);
   template void
-  create_box_mesh<3>(dealii::Triangulation<3> &, const std::vector<unsigned int> &,
-                     const dealii::Point<3> &, const dealii::Point<3> &);
+  create_box_mesh<3>(dealii::Triangulation<3> &,
+                     const std::vector<unsigned int> &,
+                     const dealii::Point<3> &,
+                     const dealii::Point<3> &);
 } // namespace mpm

@@ -6,16 +6,15 @@
 #include <cmath>
 #include <sstream>
 
-namespace mpm
-{
+namespace mpm {
   using namespace dealii;
 
-  namespace
-  {
+  namespace {
     template <int dim>
     std::string
-    describe_node(const BackgroundGrid<dim> &grid, const unsigned int i,
-                  const char *what)
+    describe_node(const BackgroundGrid<dim> &grid,
+                  const unsigned int         i,
+                  const char                *what)
     {
       std::ostringstream s;
       s << "non-finite nodal " << what << " at the grid node at ("
@@ -27,21 +26,21 @@ namespace mpm
   template <int dim>
   std::string
   update_grid(const BackgroundGrid<dim> &grid,
-              const NodalVector &        p2g,
+              const NodalVector         &p2g,
               const double               dt,
               const double               damping,
               const double               min_mass,
-              NodalVector &              kinematics)
+              NodalVector               &kinematics)
   {
-    using P                = transfer::P2GLayout<dim>;
-    using K                = KinematicsLayout<dim>;
-    const double *in       = p2g.begin();
-    double *      out      = kinematics.begin();
+    using P           = transfer::P2GLayout<dim>;
+    using K           = KinematicsLayout<dim>;
+    const double *in  = p2g.begin();
+    double       *out = kinematics.begin();
     std::string   error;
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       {
         const double *node = in + i * P::n_components;
-        double *      k    = out + i * K::n_components;
+        double       *k    = out + i * K::n_components;
         const double  m    = node[P::mass];
         if (!(m > min_mass))
           {
@@ -74,26 +73,25 @@ namespace mpm
   template <int dim>
   std::string
   nodal_velocity(const BackgroundGrid<dim> &grid,
-                 const NodalVector &        p2g,
-                 const NodalVector &        momentum,
+                 const NodalVector         &p2g,
+                 const NodalVector         &momentum,
                  const unsigned int         momentum_components,
                  const unsigned int         momentum_offset,
                  const double               min_mass,
-                 NodalVector &              kinematics)
+                 NodalVector               &kinematics)
   {
-    using P          = transfer::P2GLayout<dim>;
-    using K          = KinematicsLayout<dim>;
+    using P = transfer::P2GLayout<dim>;
+    using K = KinematicsLayout<dim>;
     std::string error;
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       {
         const double m = p2g.local_element(i * P::n_components + P::mass);
         double       v[dim];
         for (unsigned int d = 0; d < dim; ++d)
-          v[d] = m > min_mass ?
-                   momentum.local_element(i * momentum_components +
-                                          momentum_offset + d) /
-                     m :
-                   0.;
+          v[d] = m > min_mass ? momentum.local_element(i * momentum_components +
+                                                       momentum_offset + d) /
+                                  m :
+                                0.;
         grid.constrain(i, v);
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -108,24 +106,48 @@ namespace mpm
   }
 
   template std::string
-  update_grid<1>(const BackgroundGrid<1> &, const NodalVector &, double,
-                 double, double, NodalVector &);
+  update_grid<1>(const BackgroundGrid<1> &,
+                 const NodalVector &,
+                 double,
+                 double,
+                 double,
+                 NodalVector &);
   template std::string
-  update_grid<2>(const BackgroundGrid<2> &, const NodalVector &, double,
-                 double, double, NodalVector &);
+  update_grid<2>(const BackgroundGrid<2> &,
+                 const NodalVector &,
+                 double,
+                 double,
+                 double,
+                 NodalVector &);
   template std::string
-  update_grid<3>(const BackgroundGrid<3> &, const NodalVector &, double,
-                 double, double, NodalVector &);
+  update_grid<3>(const BackgroundGrid<3> &,
+                 const NodalVector &,
+                 double,
+                 double,
+                 double,
+                 NodalVector &);
   template std::string
-  nodal_velocity<1>(const BackgroundGrid<1> &, const NodalVector &,
-                    const NodalVector &, unsigned int, unsigned int, double,
+  nodal_velocity<1>(const BackgroundGrid<1> &,
+                    const NodalVector &,
+                    const NodalVector &,
+                    unsigned int,
+                    unsigned int,
+                    double,
                     NodalVector &);
   template std::string
-  nodal_velocity<2>(const BackgroundGrid<2> &, const NodalVector &,
-                    const NodalVector &, unsigned int, unsigned int, double,
+  nodal_velocity<2>(const BackgroundGrid<2> &,
+                    const NodalVector &,
+                    const NodalVector &,
+                    unsigned int,
+                    unsigned int,
+                    double,
                     NodalVector &);
   template std::string
-  nodal_velocity<3>(const BackgroundGrid<3> &, const NodalVector &,
-                    const NodalVector &, unsigned int, unsigned int, double,
+  nodal_velocity<3>(const BackgroundGrid<3> &,
+                    const NodalVector &,
+                    const NodalVector &,
+                    unsigned int,
+                    unsigned int,
+                    double,
                     NodalVector &);
 } // namespace mpm

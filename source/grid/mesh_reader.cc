@@ -6,14 +6,13 @@
 #include <filesystem>
 #include <fstream>
 
-namespace mpm
-{
+namespace mpm {
   template <int dim>
   void
   read_mesh(dealii::Triangulation<dim> &tria,
-            const std::string &         file_name,
-            const std::string &         input_folder,
-            const std::string &         entry)
+            const std::string          &file_name,
+            const std::string          &input_folder,
+            const std::string          &entry)
   {
     namespace fs = std::filesystem;
     fs::path path(file_name);
@@ -25,9 +24,9 @@ namespace mpm
                        "': file not found (looked next to the parameter "
                        "file and in the working directory)");
 
-    const std::string ext = path.extension().string();
+    const std::string   ext = path.extension().string();
     dealii::GridIn<dim> in(tria);
-    std::ifstream        stream(path);
+    std::ifstream       stream(path);
     try
       {
         if (ext == ".msh")
@@ -45,21 +44,27 @@ namespace mpm
       }
     catch (const std::exception &e)
       {
-        throw InputError(entry + " = '" + file_name +
-                         "': cannot read the mesh: " +
-                         clean_dealii_message(e.what()));
+        throw InputError(
+          entry + " = '" + file_name +
+          "': cannot read the mesh: " + clean_dealii_message(e.what()));
       }
     if (tria.n_global_active_cells() == 0)
       throw InputError(entry + " = '" + file_name + "': the mesh has no cells");
   }
 
   template void
-  read_mesh<1>(dealii::Triangulation<1> &, const std::string &,
-               const std::string &, const std::string &);
+  read_mesh<1>(dealii::Triangulation<1> &,
+               const std::string &,
+               const std::string &,
+               const std::string &);
   template void
-  read_mesh<2>(dealii::Triangulation<2> &, const std::string &,
-               const std::string &, const std::string &);
+  read_mesh<2>(dealii::Triangulation<2> &,
+               const std::string &,
+               const std::string &,
+               const std::string &);
   template void
-  read_mesh<3>(dealii::Triangulation<3> &, const std::string &,
-               const std::string &, const std::string &);
+  read_mesh<3>(dealii::Triangulation<3> &,
+               const std::string &,
+               const std::string &,
+               const std::string &);
 } // namespace mpm

@@ -12,12 +12,12 @@
 #include <iomanip>
 #include <sstream>
 
-namespace mpm
-{
+namespace mpm {
   using namespace dealii;
 
   void
-  write_file_atomically(const std::string &file_name, const std::string &content)
+  write_file_atomically(const std::string &file_name,
+                        const std::string &content)
   {
     const std::string tmp = file_name + ".tmp";
     {
@@ -27,13 +27,14 @@ namespace mpm
         throw std::runtime_error("Cannot write the file '" + tmp + "'");
     }
     if (std::rename(tmp.c_str(), file_name.c_str()) != 0)
-      throw std::runtime_error("Cannot rename '" + tmp + "' to '" + file_name + "'");
+      throw std::runtime_error("Cannot rename '" + tmp + "' to '" + file_name +
+                               "'");
   }
 
   template <int dim>
   OutputWriter<dim>::OutputWriter(const MPI_Comm                  comm,
-                                  const std::string &             directory,
-                                  const ParticleLayout<dim> &     layout,
+                                  const std::string              &directory,
+                                  const ParticleLayout<dim>      &layout,
                                   const std::vector<std::string> &history_names)
     : comm(comm)
     , directory(directory)
@@ -43,16 +44,16 @@ namespace mpm
 
   template <int dim>
   void
-  OutputWriter<dim>::write_particles_vtu(Particles::ParticleHandler<dim> &particles,
-                                         const double                     time)
+  OutputWriter<dim>::write_particles_vtu(
+    Particles::ParticleHandler<dim> &particles,
+    const double                     time)
   {
     Particles::DataOut<dim> out;
     out.build_patches(particles,
                       layout.names(history_names),
                       layout.interpretations());
-    const std::string name =
-      out.write_vtu_with_pvtu_record(directory + "/", "particles", n_outputs,
-                                     comm, 5, 8);
+    const std::string name = out.write_vtu_with_pvtu_record(
+      directory + "/", "particles", n_outputs, comm, 5, 8);
     particle_records.emplace_back(time, name);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
@@ -65,39 +66,41 @@ namespace mpm
   template <int dim>
   void
   OutputWriter<dim>::write_grid_vtu(const BackgroundGrid<dim> &grid,
-                                    const NodalVector &        p2g,
-                                    const NodalVector &        kinematics,
+                                    const NodalVector         &p2g,
+                                    const NodalVector         &kinematics,
                                     const double               time)
   {
     using P = transfer::P2GLayout<dim>;
     using K = KinematicsLayout<dim>;
     // Unpack to one scalar vector per field in the DoF numbering.
-    const auto  part = grid.node_partitioner();
+    const auto               part = grid.node_partitioner();
     std::vector<NodalVector> fields(1 + dim);
     for (auto &f : fields)
       f.reinit(part);
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       {
-        fields[0].local_element(i) = p2g.local_element(i * P::n_components + P::mass);
+        fields[0].local_element(i) =
+          p2g.local_element(i * P::n_components + P::mass);
         for (unsigned int d = 0; d < dim; ++d)
           fields[1 + d].local_element(i) =
             kinematics.local_element(i * K::n_components + K::velocity + d);
       }
-    const char *axis[3] = {"x", "y", "z"};
+    const char  *axis[3] = {"x", "y", "z"};
     DataOut<dim> out;
     out.attach_dof_handler(grid.dof_handler());
     for (auto &f : fields)
       f.update_ghost_values();
     out.add_data_vector(fields[0], "nodal_mass");
     for (unsigned int d = 0; d < dim; ++d)
-      out.add_data_vector(fields[1 + d], std::string("nodal_velocity_") + axis[d]);
+      out.add_data_vector(fields[1 + d],
+                          std::string("nodal_velocity_") + axis[d]);
     Vector<float> subdomain(grid.triangulation().n_active_cells());
     for (auto &s : subdomain)
       s = grid.triangulation().locally_owned_subdomain();
     out.add_data_vector(subdomain, "subdomain");
     out.build_patches();
-    const std::string name =
-      out.write_vtu_with_pvtu_record(directory + "/", "grid", n_outputs, comm, 5, 8);
+    const std::string name = out.write_vtu_with_pvtu_record(
+      directory + "/", "grid", n_outputs, comm, 5, 8);
     grid_records.emplace_back(time, name);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
@@ -109,11 +112,12 @@ namespace mpm
 
   template <int dim>
   void
-  OutputWriter<dim>::write_particles_csv(Particles::ParticleHandler<dim> &particles,
-                                         const double                     time)
+  OutputWriter<dim>::write_particles_csv(
+    Particles::ParticleHandler<dim> &particles,
+    const double                     time)
   {
     // Rows of (id, x, properties), gathered on rank 0 and sorted by id.
-    const unsigned int  np = layout.n_properties();
+    const unsigned int  np  = layout.n_properties();
     const unsigned int  row = 1 + dim + np;
     std::vector<double> local;
     local.reserve(particles.n_locally_owned_particles() * row);
@@ -133,11 +137,12 @@ namespace mpm
     for (const auto &part : all)
       for (std::size_t i = 0; i < part.size(); i += row)
         rows.push_back(part.data() + i);
-    std::sort(rows.begin(), rows.end(),
-              [](const double *a, const double *b) { return a[0] < b[0]; });
+    std::sort(rows.begin(), rows.end(), [](const double *a, const double *b) {
+      return a[0] < b[0];
+    });
 
     std::ostringstream out;
-    const char *axis[3] = {"x", "y", "z"};
+    const char        *axis[3] = {"x", "y", "z"};
     out << "id";
     for (unsigned int d = 0; d < dim; ++d)
       out << ',' << axis[d];

@@ -5,26 +5,26 @@
 
 #include <iomanip>
 
-namespace mpm
-{
+namespace mpm {
   using namespace dealii;
 
   template <int dim>
   void
   GlobalStatistics<dim>::compute(Particles::ParticleHandler<dim> &particles,
-                                 const std::vector<Body<dim>> &   bodies,
+                                 const std::vector<Body<dim>>    &bodies,
                                  const MPI_Comm                   comm)
   {
     using L = ParticleLayout<dim>;
     // Local sums in one array, reduced with one collective call.
-    constexpr unsigned int n = 4 + dim + 3;
+    constexpr unsigned int n        = 4 + dim + 3;
     double                 local[n] = {};
     for (const auto &p : particles)
       {
         const double *prop = p.get_properties().data();
         const double  m    = prop[L::mass];
-        const auto   &mat  = *bodies[static_cast<unsigned int>(prop[L::body])].material;
-        double        v2   = 0;
+        const auto   &mat =
+          *bodies[static_cast<unsigned int>(prop[L::body])].material;
+        double v2 = 0;
         for (unsigned int d = 0; d < dim; ++d)
           {
             v2 += prop[L::velocity + d] * prop[L::velocity + d];
@@ -33,11 +33,12 @@ namespace mpm
         local[0] += 1;
         local[1] += m;
         local[2] += 0.5 * m * v2;
-        local[3] += prop[L::volume0] *
-                    mat.strain_energy_density(
-                      load_stress(prop + L::stress),
-                      embed<dim>(load_matrix<dim>(prop + L::F), 1.),
-                      ArrayView<const double>(prop + L::history, mat.n_history()));
+        local[3] +=
+          prop[L::volume0] *
+          mat.strain_energy_density(
+            load_stress(prop + L::stress),
+            embed<dim>(load_matrix<dim>(prop + L::F), 1.),
+            ArrayView<const double>(prop + L::history, mat.n_history()));
         Tensor<1, 3> x, v;
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -49,7 +50,8 @@ namespace mpm
           local[4 + dim + d] += h[d];
       }
     double global[n];
-    Utilities::MPI::sum(ArrayView<const double>(local, n), comm,
+    Utilities::MPI::sum(ArrayView<const double>(local, n),
+                        comm,
                         ArrayView<double>(global, n));
     n_particles    = static_cast<unsigned long long>(global[0] + 0.5);
     mass           = global[1];
@@ -65,10 +67,16 @@ namespace mpm
   std::vector<std::string>
   StatisticsFile<dim>::column_names(const std::vector<std::string> &extra)
   {
-    const char *axis[3] = {"x", "y", "z"};
-    std::vector<std::string> c = {"time", "step", "dt", "n_particles",
-                                  "mass", "removed_mass", "kinetic_energy",
-                                  "strain_energy", "total_energy"};
+    const char              *axis[3] = {"x", "y", "z"};
+    std::vector<std::string> c       = {"time",
+                                        "step",
+                                        "dt",
+                                        "n_particles",
+                                        "mass",
+                                        "removed_mass",
+                                        "kinetic_energy",
+                                        "strain_energy",
+                                        "total_energy"};
     for (unsigned int d = 0; d < dim; ++d)
       c.push_back(std::string("momentum_") + axis[d]);
     if (dim == 2)
@@ -82,7 +90,7 @@ namespace mpm
 
   template <int dim>
   void
-  StatisticsFile<dim>::open(const std::string &             file_name,
+  StatisticsFile<dim>::open(const std::string              &file_name,
                             const std::vector<std::string> &extra)
   {
     out.open(file_name);
@@ -98,7 +106,7 @@ namespace mpm
                                  const unsigned int           step,
                                  const double                 dt,
                                  const GlobalStatistics<dim> &s,
-                                 const std::vector<double> &  extra)
+                                 const std::vector<double>   &extra)
   {
     if (!out.is_open())
       return;

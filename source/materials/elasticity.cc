@@ -4,12 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-namespace mpm
-{
-  namespace materials
-  {
-    namespace elasticity
-    {
+namespace mpm {
+  namespace materials {
+    namespace elasticity {
       using dealii::SymmetricTensor;
       using dealii::Tensor;
 
@@ -97,8 +94,7 @@ namespace mpm
         SymmetricTensor<2, 3> d_sigma;
         switch (k)
           {
-            case KinematicAssumption::plane_stress:
-              {
+              case KinematicAssumption::plane_stress: {
                 // Eliminating eps_zz with sigma_zz = 0 gives the in-plane
                 // law with a reduced lambda.
                 const double lambda      = c.lambda();
@@ -181,8 +177,7 @@ namespace mpm
               stress[0][2] = 0;
               stress[1][2] = 0;
               break;
-            case KinematicAssumption::uniaxial_stress:
-              {
+              case KinematicAssumption::uniaxial_stress: {
                 const double sigma_xx = stress[0][0];
                 stress                = 0;
                 stress[0][0]          = sigma_xx;

@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-namespace mpm
-{
-  namespace materials
-  {
+namespace mpm {
+  namespace materials {
     void
     LinearElastic::declare_parameters(dealii::ParameterHandler &prm)
     {

@@ -1,17 +1,14 @@
+#include <deal.II/base/symmetric_tensor.h>
+
 #include <mpm/materials/neo_hookean.h>
 #include <mpm/utilities/input_error.h>
-
-#include <deal.II/base/symmetric_tensor.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace mpm
-{
-  namespace materials
-  {
-    namespace
-    {
+namespace mpm {
+  namespace materials {
+    namespace {
       double
       jacobian(const Tensor<2, 3> &F)
       {

@@ -3,12 +3,9 @@
 
 #include <cmath>
 
-namespace mpm
-{
-  namespace materials
-  {
-    namespace
-    {
+namespace mpm {
+  namespace materials {
+    namespace {
       double
       jacobian(const Tensor<2, 3> &F)
       {

@@ -1,15 +1,13 @@
+#include <deal.II/base/exceptions.h>
+
 #include <mpm/materials/von_mises_plasticity.h>
 #include <mpm/utilities/input_error.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace mpm
-{
-  namespace materials
-  {
+namespace mpm {
+  namespace materials {
     void
     VonMisesPlasticity::declare_parameters(dealii::ParameterHandler &prm)
     {

@@ -9,14 +9,11 @@
 #include <fstream>
 #include <sstream>
 
-namespace mpm
-{
-  namespace Parameters
-  {
+namespace mpm {
+  namespace Parameters {
     using namespace dealii;
 
-    namespace
-    {
+    namespace {
       /// "0; 0" for vector-valued expressions
       std::string
       default_expression(const int dim)
@@ -200,17 +197,19 @@ namespace mpm
     TimeStepping::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Time stepping");
-      end_time = prm.get_double("End time");
+      end_time            = prm.get_double("End time");
       const std::string s = prm.get("Scheme");
-      scheme = s == "USF" ? Scheme::usf : s == "USL" ? Scheme::usl : Scheme::musl;
-      step_control  = prm.get("Time step control") == "fixed" ?
-                        StepControl::fixed :
-                        StepControl::cfl;
-      time_step     = prm.get_double("Time step");
-      cfl_number    = prm.get_double("CFL number");
-      flip_fraction = prm.get_double("FLIP fraction");
-      damping       = prm.get_double("Damping coefficient");
-      max_steps     = prm.get_integer("Maximum number of steps");
+      scheme              = s == "USF" ? Scheme::usf :
+                            s == "USL" ? Scheme::usl :
+                                         Scheme::musl;
+      step_control        = prm.get("Time step control") == "fixed" ?
+                              StepControl::fixed :
+                              StepControl::cfl;
+      time_step           = prm.get_double("Time step");
+      cfl_number          = prm.get_double("CFL number");
+      flip_fraction       = prm.get_double("FLIP fraction");
+      damping             = prm.get_double("Damping coefficient");
+      max_steps           = prm.get_integer("Maximum number of steps");
       prm.leave_subsection();
       if (step_control == StepControl::fixed && !(time_step > 0))
         throw InputError("Time stepping/Time step must be positive");
@@ -245,8 +244,8 @@ namespace mpm
     BoundaryConditions::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Boundary conditions");
-      fixed = parse_id_list(prm.get("Fixed boundary ids"));
-      slip  = parse_id_list(prm.get("Slip boundary ids"));
+      fixed                 = parse_id_list(prm.get("Fixed boundary ids"));
+      slip                  = parse_id_list(prm.get("Slip boundary ids"));
       remove_lost_particles = prm.get("Particles leaving the grid") == "remove";
       prm.leave_subsection();
       for (const auto f : fixed)
@@ -285,7 +284,10 @@ namespace mpm
                         default_point(dim, 0.5),
                         Patterns::List(Patterns::Double(), dim, dim),
                         "Ball: centre [m].");
-      prm.declare_entry("Radius", "0.25", Patterns::Double(0), "Ball: radius [m].");
+      prm.declare_entry("Radius",
+                        "0.25",
+                        Patterns::Double(0),
+                        "Ball: radius [m].");
       prm.declare_entry("Refinements",
                         "2",
                         Patterns::Integer(0, 10),
@@ -306,7 +308,9 @@ namespace mpm
                           " separated by ';' (muparser).");
       prm.declare_entry(
         "Initial stress",
-        dim == 1 ? "0" : dim == 2 ? "0; 0; 0" : "0; 0; 0; 0; 0; 0",
+        dim == 1 ? "0" :
+        dim == 2 ? "0; 0; 0" :
+                   "0; 0; 0; 0; 0; 0",
         Patterns::Anything(),
         std::string("Cauchy stress at t = 0 [Pa], expressions of ") + xyz +
           " separated by ';': " +
@@ -319,7 +323,9 @@ namespace mpm
                         Patterns::Anything(),
                         "Body force per unit mass [m/s^2], expressions of " +
                           xyz + ", the material coordinates " +
-                          (dim == 1 ? "X" : dim == 2 ? "X, Y" : "X, Y, Z") +
+                          (dim == 1 ? "X" :
+                           dim == 2 ? "X, Y" :
+                                      "X, Y, Z") +
                           " (initial position) and t, separated by ';'.");
       prm.declare_entry("Traction",
                         default_expression(dim),
@@ -342,17 +348,17 @@ namespace mpm
     Body<dim>::parse_parameters(ParameterHandler &prm)
     {
       const std::string g = prm.get("Geometry");
-      geometry = g == "box" ? Geometry::box :
-                 g == "ball" ? Geometry::ball :
-                               Geometry::mesh_file;
-      lower  = parse_point<dim>(prm.get("Lower corner"), "Lower corner");
-      upper  = parse_point<dim>(prm.get("Upper corner"), "Upper corner");
+      geometry            = g == "box"  ? Geometry::box :
+                            g == "ball" ? Geometry::ball :
+                                          Geometry::mesh_file;
+      lower = parse_point<dim>(prm.get("Lower corner"), "Lower corner");
+      upper = parse_point<dim>(prm.get("Upper corner"), "Upper corner");
       subdivisions =
         parse_unsigned_list(prm.get("Subdivisions"), dim, "Subdivisions");
-      center      = parse_point<dim>(prm.get("Center"), "Center");
-      radius      = prm.get_double("Radius");
-      refinements = prm.get_integer("Refinements");
-      mesh_file   = prm.get("Mesh file");
+      center                  = parse_point<dim>(prm.get("Center"), "Center");
+      radius                  = prm.get_double("Radius");
+      refinements             = prm.get_integer("Refinements");
+      mesh_file               = prm.get("Mesh file");
       particles_per_direction = prm.get_integer("Particles per direction");
       initial_velocity        = prm.get("Initial velocity");
       initial_stress          = prm.get("Initial stress");
@@ -443,12 +449,11 @@ namespace mpm
                         "Number of `Body i` subsections (i = 0, 1, ...).");
     }
 
-    namespace
-    {
+    namespace {
       /// Parse with the working directory set to the file's folder, so
       /// that `include other.prm` is found next to the including file.
       void
-      parse_in_folder(ParameterHandler &prm,
+      parse_in_folder(ParameterHandler  &prm,
                       const std::string &file_name,
                       const bool         skip_undefined)
       {
@@ -512,7 +517,7 @@ namespace mpm
     // -------------------------------------------------------- AllParameters
     template <int dim>
     void
-    AllParameters<dim>::declare_parameters(ParameterHandler &prm,
+    AllParameters<dim>::declare_parameters(ParameterHandler  &prm,
                                            const unsigned int n_bodies)
     {
       declare_preamble(prm);
@@ -555,7 +560,7 @@ namespace mpm
     {
       if (prm.get_integer("Dimension") != dim)
         throw InputError("Dimension mismatch");
-      n_bodies = prm.get_integer("Number of bodies");
+      n_bodies            = prm.get_integer("Number of bodies");
       const std::string k = prm.get("Kinematic assumption");
       if (k == "default")
         kinematics = dim == 3 ? KinematicAssumption::three_dimensional :

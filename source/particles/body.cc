@@ -7,8 +7,7 @@
 #include <mpm/shape_functions/q1_cell.h>
 #include <mpm/utilities/input_error.h>
 
-namespace mpm
-{
+namespace mpm {
   using namespace dealii;
 
   std::string
@@ -39,10 +38,10 @@ namespace mpm
 
   template <int dim>
   void
-  create_body_mesh(Triangulation<dim> &         mesh,
+  create_body_mesh(Triangulation<dim>          &mesh,
                    const Parameters::Body<dim> &prm,
-                   const std::string &          input_folder,
-                   const std::string &          where)
+                   const std::string           &input_folder,
+                   const std::string           &where)
   {
     using G = typename Parameters::Body<dim>::Geometry;
     switch (prm.geometry)
@@ -72,19 +71,19 @@ namespace mpm
 
   template <int dim>
   void
-  split_body_cells(const Triangulation<dim> &             mesh,
+  split_body_cells(const Triangulation<dim>              &mesh,
                    const unsigned int                     n,
                    const std::vector<types::boundary_id> &traction_ids,
                    const unsigned int                     first_cell,
                    const unsigned int                     end_cell,
-                   std::vector<ParticleSeed<dim>> &       seeds,
-                   std::vector<unsigned long long> &      seed_ids)
+                   std::vector<ParticleSeed<dim>>        &seeds,
+                   std::vector<unsigned long long>       &seed_ids)
   {
-    using Cell                   = shape_functions::Q1Cell<dim>;
-    const unsigned int n_sub     = Utilities::fixed_power<dim>(n);
+    using Cell               = shape_functions::Q1Cell<dim>;
+    const unsigned int n_sub = Utilities::fixed_power<dim>(n);
     const QGauss<dim>  gauss(2); // exact for det J of Q1 cells
     const QGauss<dim - 1 == 0 ? 1 : dim - 1> face_gauss(2);
-    const double       h = 1. / n;
+    const double                             h = 1. / n;
 
     unsigned int cell_index = 0;
     for (const auto &cell : mesh.active_cell_iterators())
@@ -121,8 +120,9 @@ namespace mpm
               centre[d] = 0.5;
             seed.position = geo.map(to_cell(centre));
             for (unsigned int q = 0; q < gauss.size(); ++q)
-              seed.volume += determinant(geo.jacobian(to_cell(gauss.point(q)))) *
-                             gauss.weight(q) * std::pow(h, dim);
+              seed.volume +=
+                determinant(geo.jacobian(to_cell(gauss.point(q)))) *
+                gauss.weight(q) * std::pow(h, dim);
             if (!(seed.volume > 0))
               throw InputError("The body mesh has an inverted or degenerate "
                                "cell at " +
@@ -159,11 +159,11 @@ namespace mpm
                       if constexpr (dim == 2)
                         {
                           const unsigned int t = 1 - normal_dir;
-                          da = std::hypot(Jf[0][t], Jf[1][t]);
+                          da                   = std::hypot(Jf[0][t], Jf[1][t]);
                         }
                       else
                         {
-                          Tensor<1, 3> a, b;
+                          Tensor<1, 3>       a, b;
                           const unsigned int t1 = (normal_dir + 1) % 3,
                                              t2 = (normal_dir + 2) % 3;
                           for (unsigned int d = 0; d < 3; ++d)
@@ -178,9 +178,8 @@ namespace mpm
                     }
               }
             seeds.push_back(seed);
-            seed_ids.push_back(static_cast<unsigned long long>(this_cell) *
-                                 n_sub +
-                               s);
+            seed_ids.push_back(
+              static_cast<unsigned long long>(this_cell) * n_sub + s);
           }
       }
   }
@@ -189,27 +188,42 @@ namespace mpm
   template struct Body<2>;
   template struct Body<3>;
   template void
-  create_body_mesh<1>(Triangulation<1> &, const Parameters::Body<1> &,
-                      const std::string &, const std::string &);
+  create_body_mesh<1>(Triangulation<1> &,
+                      const Parameters::Body<1> &,
+                      const std::string &,
+                      const std::string &);
   template void
-  create_body_mesh<2>(Triangulation<2> &, const Parameters::Body<2> &,
-                      const std::string &, const std::string &);
+  create_body_mesh<2>(Triangulation<2> &,
+                      const Parameters::Body<2> &,
+                      const std::string &,
+                      const std::string &);
   template void
-  create_body_mesh<3>(Triangulation<3> &, const Parameters::Body<3> &,
-                      const std::string &, const std::string &);
+  create_body_mesh<3>(Triangulation<3> &,
+                      const Parameters::Body<3> &,
+                      const std::string &,
+                      const std::string &);
   template void
-  split_body_cells<1>(const Triangulation<1> &, unsigned int,
-                      const std::vector<types::boundary_id> &, unsigned int,
-                      unsigned int, std::vector<ParticleSeed<1>> &,
+  split_body_cells<1>(const Triangulation<1> &,
+                      unsigned int,
+                      const std::vector<types::boundary_id> &,
+                      unsigned int,
+                      unsigned int,
+                      std::vector<ParticleSeed<1>> &,
                       std::vector<unsigned long long> &);
   template void
-  split_body_cells<2>(const Triangulation<2> &, unsigned int,
-                      const std::vector<types::boundary_id> &, unsigned int,
-                      unsigned int, std::vector<ParticleSeed<2>> &,
+  split_body_cells<2>(const Triangulation<2> &,
+                      unsigned int,
+                      const std::vector<types::boundary_id> &,
+                      unsigned int,
+                      unsigned int,
+                      std::vector<ParticleSeed<2>> &,
                       std::vector<unsigned long long> &);
   template void
-  split_body_cells<3>(const Triangulation<3> &, unsigned int,
-                      const std::vector<types::boundary_id> &, unsigned int,
-                      unsigned int, std::vector<ParticleSeed<3>> &,
+  split_body_cells<3>(const Triangulation<3> &,
+                      unsigned int,
+                      const std::vector<types::boundary_id> &,
+                      unsigned int,
+                      unsigned int,
+                      std::vector<ParticleSeed<3>> &,
                       std::vector<unsigned long long> &);
 } // namespace mpm

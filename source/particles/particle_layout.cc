@@ -1,16 +1,15 @@
 #include <mpm/particles/particle_layout.h>
 
-namespace mpm
-{
-  namespace
-  {
-    const char *axis[3]   = {"x", "y", "z"};
-    const char *voigt[6]  = {"xx", "yy", "zz", "yz", "xz", "xy"};
+namespace mpm {
+  namespace {
+    const char *axis[3]  = {"x", "y", "z"};
+    const char *voigt[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
   } // namespace
 
   template <int dim>
   std::vector<std::string>
-  ParticleLayout<dim>::names(const std::vector<std::string> &history_names) const
+  ParticleLayout<dim>::names(
+    const std::vector<std::string> &history_names) const
   {
     std::vector<std::string> n(n_properties());
     n[mass]          = "mass";
@@ -33,8 +32,9 @@ namespace mpm
             std::string("domain_r") + std::to_string(j) + "_" + axis[i];
         }
     for (unsigned int h = 0; h < n_history; ++h)
-      n[history + h] = h < history_names.size() ? history_names[h] :
-                                                  "history_" + std::to_string(h);
+      n[history + h] = h < history_names.size() ?
+                         history_names[h] :
+                         "history_" + std::to_string(h);
     for (auto &s : n)
       for (auto &c : s)
         if (c == ' ')

@@ -1,17 +1,16 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/cell_id.h>
 
+#include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_relocation.h>
 
 #include <map>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   using namespace dealii;
 
-  namespace
-  {
+  namespace {
     template <int dim>
     using CellIterator = typename Triangulation<dim>::active_cell_iterator;
 
@@ -25,10 +24,10 @@ namespace mpm
     bool
     find_cell(const BackgroundGrid<dim> &grid,
               CellIterator<dim>          cell,
-              const Point<dim> &         x,
+              const Point<dim>          &x,
               Point<dim>                 xi,
-              CellIterator<dim> &        found,
-              Point<dim> &               found_xi)
+              CellIterator<dim>         &found,
+              Point<dim>                &found_xi)
     {
       for (unsigned int hop = 0; hop < 2 * dim; ++hop)
         {
@@ -73,29 +72,25 @@ namespace mpm
 
   template <int dim>
   bool
-  relocate_particles(const BackgroundGrid<dim> &      grid,
+  relocate_particles(const BackgroundGrid<dim>       &grid,
                      Particles::ParticleHandler<dim> &particles,
                      const MPI_Comm                   comm)
   {
     const unsigned int n_props = particles.n_properties_per_particle();
     std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
-                                          leaving;
-    std::vector<Moving<dim>>              local_moves;
+                                                leaving;
+    std::vector<Moving<dim>>                    local_moves;
     std::map<unsigned int, std::vector<double>> to_send;
-    bool                                  unplaced = false;
+    bool                                        unplaced = false;
 
-    for (const auto &cell : grid.triangulation().active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
-        const auto pic = particles.particles_in_cell(cell);
-        if (pic.begin() == pic.end())
-          continue;
+    for_each_cell_with_particles(
+      grid, particles, [&](const auto &cell, const auto &pic) {
         const auto &geo = grid.geometry(cell);
         for (auto it = pic.begin(); it != pic.end(); ++it)
           {
-            const Point<dim> x  = it->get_location();
-            const Point<dim> xi = geo.inverse_map(x, it->get_reference_location());
+            const Point<dim> x = it->get_location();
+            const Point<dim> xi =
+              geo.inverse_map(x, it->get_reference_location());
             if (shape_functions::Q1Cell<dim>::is_inside(xi))
               {
                 it->set_reference_location(xi);
@@ -110,13 +105,17 @@ namespace mpm
               }
             const auto props = it->get_properties();
             if (target->is_locally_owned())
-              local_moves.push_back({target, x, target_xi, it->get_id(),
-                                     std::vector<double>(props.begin(), props.end())});
+              local_moves.push_back(
+                {target,
+                 x,
+                 target_xi,
+                 it->get_id(),
+                 std::vector<double>(props.begin(), props.end())});
             else
               {
                 // Packed as: cell id (binary), id, x, xi, properties.
-                auto &buffer = to_send[target->subdomain_id()];
-                const auto cid = target->id().template to_binary<dim>();
+                auto      &buffer = to_send[target->subdomain_id()];
+                const auto cid    = target->id().template to_binary<dim>();
                 for (const auto c : cid)
                   buffer.push_back(static_cast<double>(c));
                 buffer.push_back(static_cast<double>(it->get_id()));
@@ -128,31 +127,34 @@ namespace mpm
               }
             leaving.push_back(it);
           }
-      }
+      });
 
     const bool parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
-    if ((parallel ? Utilities::MPI::max(unplaced ? 1 : 0, comm) : unplaced) != 0)
+    if ((parallel ? Utilities::MPI::max(unplaced ? 1 : 0, comm) : unplaced) !=
+        0)
       return false;
 
     particles.remove_particles(leaving);
     for (const auto &m : local_moves)
-      particles.insert_particle(m.x, m.xi, m.id, m.cell,
-                                ArrayView<const double>(m.properties));
+      particles.insert_particle(
+        m.x, m.xi, m.id, m.cell, ArrayView<const double>(m.properties));
     if (parallel)
       {
-        const auto received = Utilities::MPI::some_to_some(comm, to_send);
-        using Binary        = CellId::binary_type;
-        const unsigned int n_cid   = std::tuple_size<Binary>::value;
+        const auto received      = Utilities::MPI::some_to_some(comm, to_send);
+        using Binary             = CellId::binary_type;
+        const unsigned int n_cid = std::tuple_size<Binary>::value;
         const unsigned int n_entry = n_cid + 1 + 2 * dim + n_props;
         for (const auto &[rank, buffer] : received)
           for (std::size_t i = 0; i < buffer.size(); i += n_entry)
             {
               Binary cid;
               for (unsigned int c = 0; c < n_cid; ++c)
-                cid[c] = static_cast<typename Binary::value_type>(buffer[i + c]);
+                cid[c] =
+                  static_cast<typename Binary::value_type>(buffer[i + c]);
               const auto cell =
                 grid.triangulation().create_cell_iterator(CellId(cid));
-              const auto       id = static_cast<types::particle_index>(buffer[i + n_cid]);
+              const auto id =
+                static_cast<types::particle_index>(buffer[i + n_cid]);
               Point<dim> x, xi;
               for (unsigned int d = 0; d < dim; ++d)
                 {
@@ -160,21 +162,27 @@ namespace mpm
                   xi[d] = buffer[i + n_cid + 1 + dim + d];
                 }
               particles.insert_particle(
-                x, xi, id,
+                x,
+                xi,
+                id,
                 typename Triangulation<dim>::active_cell_iterator(cell),
-                ArrayView<const double>(&buffer[i + n_cid + 1 + 2 * dim], n_props));
+                ArrayView<const double>(&buffer[i + n_cid + 1 + 2 * dim],
+                                        n_props));
             }
       }
     return true;
   }
 
   template bool
-  relocate_particles<1>(const BackgroundGrid<1> &, Particles::ParticleHandler<1> &,
+  relocate_particles<1>(const BackgroundGrid<1> &,
+                        Particles::ParticleHandler<1> &,
                         MPI_Comm);
   template bool
-  relocate_particles<2>(const BackgroundGrid<2> &, Particles::ParticleHandler<2> &,
+  relocate_particles<2>(const BackgroundGrid<2> &,
+                        Particles::ParticleHandler<2> &,
                         MPI_Comm);
   template bool
-  relocate_particles<3>(const BackgroundGrid<3> &, Particles::ParticleHandler<3> &,
+  relocate_particles<3>(const BackgroundGrid<3> &,
+                        Particles::ParticleHandler<3> &,
                         MPI_Comm);
 } // namespace mpm

@@ -12,12 +12,10 @@
 #include <iomanip>
 #include <sstream>
 
-namespace mpm
-{
+namespace mpm {
   using namespace dealii;
 
-  namespace
-  {
+  namespace {
     double
     wall_seconds()
     {
@@ -35,7 +33,7 @@ namespace mpm
 
   template <int dim>
   Simulator<dim>::Simulator(const Parameters::AllParameters<dim> &parameters,
-                            ParameterHandler &                    prm,
+                            ParameterHandler                     &prm,
                             const MPI_Comm                        comm)
     : params(parameters)
     , prm(prm)
@@ -58,9 +56,11 @@ namespace mpm
     create_bodies();
     create_particles();
     background.initialize_vector(p2g, transfer::P2GLayout<dim>::n_components);
-    background.initialize_vector(kinematics, KinematicsLayout<dim>::n_components);
+    background.initialize_vector(kinematics,
+                                 KinematicsLayout<dim>::n_components);
     background.initialize_vector(remap, dim);
-    benchmark = benchmarks::create_benchmark<dim>(params.benchmark, params.constants);
+    benchmark =
+      benchmarks::create_benchmark<dim>(params.benchmark, params.constants);
 
     // Nodes lighter than this carry no velocity (a relative threshold:
     // far below any real nodal mass, far above round-off).
@@ -76,8 +76,8 @@ namespace mpm
       {
         std::ostringstream msg;
         msg << "Time stepping/Time step = " << params.time.time_step
-            << " exceeds the stability limit min_p h/(c_p + |v_p|) = "
-            << limit << " of the initial state; choose at most that, or "
+            << " exceeds the stability limit min_p h/(c_p + |v_p|) = " << limit
+            << " of the initial state; choose at most that, or "
             << "Time step control = CFL";
         throw InputError(msg.str());
       }
@@ -92,37 +92,51 @@ namespace mpm
     for (unsigned int b = 0; b < params.n_bodies; ++b)
       {
         const std::string where = "Bodies/" + Parameters::body_section(b);
-        auto &            body  = bodies[b];
+        auto             &body  = bodies[b];
         body.index              = b;
         body.prm                = params.bodies[b];
         prm.enter_subsection("Bodies");
         prm.enter_subsection(Parameters::body_section(b));
         prm.enter_subsection("Material");
-        body.material =
-          materials::create_material(prm, params.kinematics, where + "/Material");
+        body.material = materials::create_material(prm,
+                                                   params.kinematics,
+                                                   where + "/Material");
         prm.leave_subsection();
         prm.leave_subsection();
         prm.leave_subsection();
 
-        const auto &c = params.constants;
-        body.initial_velocity = Expression<dim>(body.prm.initial_velocity, dim,
-                                                spatial_variables(dim), c, false,
+        const auto &c         = params.constants;
+        body.initial_velocity = Expression<dim>(body.prm.initial_velocity,
+                                                dim,
+                                                spatial_variables(dim),
+                                                c,
+                                                false,
                                                 where + "/Initial velocity");
         // 2D stress: xx; yy; xy and optionally zz
         const unsigned int n_given =
           Utilities::split_string_list(body.prm.initial_stress, ';').size();
         const unsigned int n_stress =
           (dim == 2 && n_given == 4) ? 4 : n_stress_in;
-        body.initial_stress = Expression<dim>(body.prm.initial_stress, n_stress,
-                                              spatial_variables(dim), c, false,
+        body.initial_stress = Expression<dim>(body.prm.initial_stress,
+                                              n_stress,
+                                              spatial_variables(dim),
+                                              c,
+                                              false,
                                               where + "/Initial stress");
-        body.body_force = Expression<2 * dim>(body.prm.body_force, dim,
-                                              load_variables(dim), c, true,
+        body.body_force     = Expression<2 * dim>(body.prm.body_force,
+                                              dim,
+                                              load_variables(dim),
+                                              c,
+                                              true,
                                               where + "/Body force");
-        body.traction = Expression<2 * dim>(body.prm.traction, dim,
-                                            load_variables(dim), c, true,
+        body.traction       = Expression<2 * dim>(body.prm.traction,
+                                            dim,
+                                            load_variables(dim),
+                                            c,
+                                            true,
                                             where + "/Traction");
-        layout.n_history = std::max(layout.n_history, body.material->n_history());
+        layout.n_history =
+          std::max(layout.n_history, body.material->n_history());
         if (body.material->n_history() > 0 && history_names.empty())
           history_names = body.material->history_names();
       }
@@ -130,10 +144,10 @@ namespace mpm
 
   template <int dim>
   void
-  Simulator<dim>::initial_properties(const Body<dim> &         body,
+  Simulator<dim>::initial_properties(const Body<dim>         &body,
                                      const ParticleSeed<dim> &s,
-                                     const double              rho,
-                                     std::vector<double> &     p) const
+                                     const double             rho,
+                                     std::vector<double>     &p) const
   {
     using L = ParticleLayout<dim>;
     p.assign(layout.n_properties(), 0.);
@@ -183,21 +197,22 @@ namespace mpm
         std::ostringstream s;
         s << "particle " << p->get_id() << " (body "
           << p->get_properties()[L::body] << ") left the grid in step "
-          << current_step + 1 << ", position ("
-          << p->get_location() << ")";
+          << current_step + 1 << ", position (" << p->get_location() << ")";
         lost_messages.push_back(s.str());
       });
 
     types::particle_index id_offset = 0;
     for (const auto &body : bodies)
       {
-        const std::string  where = "Bodies/" + Parameters::body_section(body.index);
+        const std::string where =
+          "Bodies/" + Parameters::body_section(body.index);
         Triangulation<dim> mesh;
         create_body_mesh(mesh, body.prm, input_folder, where);
-        const unsigned int n       = body.prm.particles_per_direction;
-        const unsigned int n_cells = mesh.n_active_cells();
+        const unsigned int       n       = body.prm.particles_per_direction;
+        const unsigned int       n_cells = mesh.n_active_cells();
         const unsigned long long expected =
-          static_cast<unsigned long long>(n_cells) * Utilities::fixed_power<dim>(n);
+          static_cast<unsigned long long>(n_cells) *
+          Utilities::fixed_power<dim>(n);
         const double rho = body.material->reference_density();
 
         // Every rank walks the whole body mesh in chunks and keeps the
@@ -205,17 +220,23 @@ namespace mpm
         // ranks go to exactly one of them).
         auto for_each_chunk = [&](const auto &work) {
           const unsigned int cells_per_chunk = 16384;
-          for (unsigned int first = 0; first < n_cells; first += cells_per_chunk)
+          for (unsigned int first = 0; first < n_cells;
+               first += cells_per_chunk)
             {
               std::vector<ParticleSeed<dim>>  seeds;
               std::vector<unsigned long long> seed_ids;
-              split_body_cells(mesh, n, body.prm.traction_boundary_ids, first,
+              split_body_cells(mesh,
+                               n,
+                               body.prm.traction_boundary_ids,
+                               first,
                                std::min(n_cells, first + cells_per_chunk),
-                               seeds, seed_ids);
+                               seeds,
+                               seed_ids);
               std::vector<Point<dim>> positions(seeds.size()), xi;
               for (std::size_t i = 0; i < seeds.size(); ++i)
                 positions[i] = seeds[i].position;
-              std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+              std::vector<typename Triangulation<dim>::active_cell_iterator>
+                cells;
               background.locate_in_owned_cells(positions, cells, xi);
               work(seeds, seed_ids, cells, xi);
             }
@@ -225,43 +246,52 @@ namespace mpm
         // Count first, so that deal.II's particle storage is allocated
         // once at its final size (growing it doubles the peak memory).
         unsigned long long local_count = 0;
-        for_each_chunk([&](const auto &, const auto &, const auto &cells,
-                           const auto &) {
-          for (const auto &c : cells)
-            local_count += (c != end_cell);
-        });
+        for_each_chunk(
+          [&](const auto &, const auto &, const auto &cells, const auto &) {
+            for (const auto &c : cells)
+              local_count += (c != end_cell);
+          });
         particle_handler.reserve(particle_handler.n_locally_owned_particles() +
                                  local_count);
-        unsigned long long inserted = 0;
+        unsigned long long  inserted = 0;
         std::vector<double> properties;
-        for_each_chunk([&](const auto &seeds, const auto &seed_ids,
-                           const auto &cells, const auto &xi) {
+        for_each_chunk([&](const auto &seeds,
+                           const auto &seed_ids,
+                           const auto &cells,
+                           const auto &xi) {
           // Insert in cell order: the particle data then lie in memory in
           // the order the cell-by-cell loops visit them.
           std::vector<std::size_t> order;
           for (std::size_t i = 0; i < seeds.size(); ++i)
             if (cells[i] != end_cell)
               order.push_back(i);
-          std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
-            return cells[a]->active_cell_index() < cells[b]->active_cell_index();
-          });
+          std::sort(order.begin(),
+                    order.end(),
+                    [&](const auto a, const auto b) {
+                      return cells[a]->active_cell_index() <
+                             cells[b]->active_cell_index();
+                    });
           for (const std::size_t i : order)
-              {
-                initial_properties(body, seeds[i], rho, properties);
-                particle_handler.insert_particle(seeds[i].position, xi[i],
-                                                 id_offset + seed_ids[i],
-                                                 cells[i],
-                                                 ArrayView<const double>(properties));
-                ++inserted;
-              }
+            {
+              initial_properties(body, seeds[i], rho, properties);
+              particle_handler.insert_particle(seeds[i].position,
+                                               xi[i],
+                                               id_offset + seed_ids[i],
+                                               cells[i],
+                                               ArrayView<const double>(
+                                                 properties));
+              ++inserted;
+            }
         });
 
         if (Utilities::MPI::sum(inserted, comm) != expected)
           {
             // Name the first particle no rank took: the body sticks out.
             std::string outside;
-            for_each_chunk([&](const auto &seeds, const auto &,
-                               const auto &cells, const auto &) {
+            for_each_chunk([&](const auto &seeds,
+                               const auto &,
+                               const auto &cells,
+                               const auto &) {
               if (!outside.empty())
                 return;
               std::vector<unsigned int> mine(seeds.size()), any(seeds.size());
@@ -302,10 +332,13 @@ namespace mpm
         particle_to_grid(P2GContent::mass_momentum);
         {
           TimerOutput::Scope t(timer, "grid update");
-          const auto e = nodal_velocity(background, p2g, p2g,
+          const auto         e = nodal_velocity(background,
+                                        p2g,
+                                        p2g,
                                         transfer::P2GLayout<dim>::n_components,
                                         transfer::P2GLayout<dim>::momentum,
-                                        min_nodal_mass, kinematics);
+                                        min_nodal_mass,
+                                        kinematics);
           if (local_error.empty())
             local_error = e;
         }
@@ -334,8 +367,8 @@ namespace mpm
   Simulator<dim>::particle_to_grid(const transfer::P2GContent content)
   {
     TimerOutput::Scope t(timer, "P2G");
-    transfer::particle_to_grid(background, particle_handler, bodies,
-                               current_time, content, p2g);
+    transfer::particle_to_grid(
+      background, particle_handler, bodies, current_time, content, p2g);
   }
 
   template <int dim>
@@ -343,8 +376,8 @@ namespace mpm
   Simulator<dim>::update_grid(const double dt)
   {
     TimerOutput::Scope t(timer, "grid update");
-    const auto e = ::mpm::update_grid(background, p2g, dt, params.time.damping,
-                                      min_nodal_mass, kinematics);
+    const auto         e = ::mpm::update_grid(
+      background, p2g, dt, params.time.damping, min_nodal_mass, kinematics);
     if (local_error.empty())
       local_error = e;
   }
@@ -354,9 +387,8 @@ namespace mpm
   Simulator<dim>::grid_to_particle(const double dt)
   {
     TimerOutput::Scope t(timer, "G2P");
-    const auto e = transfer::grid_to_particle(background, particle_handler,
-                                              kinematics, dt,
-                                              params.time.flip_fraction);
+    const auto         e = transfer::grid_to_particle(
+      background, particle_handler, kinematics, dt, params.time.flip_fraction);
     if (local_error.empty())
       local_error = e;
   }
@@ -366,11 +398,14 @@ namespace mpm
   Simulator<dim>::remap_momentum()
   {
     TimerOutput::Scope t(timer, "MUSL re-map");
-    transfer::particle_to_grid(background, particle_handler, bodies,
-                               current_time, transfer::P2GContent::momentum,
+    transfer::particle_to_grid(background,
+                               particle_handler,
+                               bodies,
+                               current_time,
+                               transfer::P2GContent::momentum,
                                remap);
-    const auto e = nodal_velocity(background, p2g, remap, dim, 0,
-                                  min_nodal_mass, kinematics);
+    const auto e = nodal_velocity(
+      background, p2g, remap, dim, 0, min_nodal_mass, kinematics);
     if (local_error.empty())
       local_error = e;
   }
@@ -380,8 +415,8 @@ namespace mpm
   Simulator<dim>::update_stress(const double dt)
   {
     TimerOutput::Scope t(timer, "stress update");
-    const auto r = ::mpm::update_stress(background, particle_handler, bodies,
-                                        kinematics, dt);
+    const auto         r = ::mpm::update_stress(
+      background, particle_handler, bodies, kinematics, dt);
     stable_dt = r.stable_time_step;
     if (local_error.empty())
       local_error = r.error;
@@ -411,13 +446,16 @@ namespace mpm
     const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
     double local[2] = {stable_dt, double(local_error.empty() ? nranks : rank)};
     double global[2];
-    Utilities::MPI::min(ArrayView<const double>(local, 2), comm,
+    Utilities::MPI::min(ArrayView<const double>(local, 2),
+                        comm,
                         ArrayView<double>(global, 2));
     stable_dt = global[0];
     if (global[1] < nranks)
       {
-        const std::string msg = Utilities::MPI::broadcast(
-          comm, local_error, static_cast<unsigned int>(global[1]));
+        const std::string msg =
+          Utilities::MPI::broadcast(comm,
+                                    local_error,
+                                    static_cast<unsigned int>(global[1]));
         std::ostringstream s;
         s << "at step " << current_step << " (t = " << current_time
           << "): " << msg;
@@ -445,7 +483,9 @@ namespace mpm
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       std::filesystem::create_directories(out.directory);
     MPI_Barrier(comm);
-    writer = std::make_unique<OutputWriter<dim>>(comm, out.directory, layout,
+    writer          = std::make_unique<OutputWriter<dim>>(comm,
+                                                 out.directory,
+                                                 layout,
                                                  history_names);
     statistics_file = std::make_unique<StatisticsFile<dim>>();
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -455,17 +495,21 @@ namespace mpm
 
     // The first output has no grid fields yet: fill them from the state.
     particle_to_grid(transfer::P2GContent::mass_momentum);
-    nodal_velocity(background, p2g, p2g, transfer::P2GLayout<dim>::n_components,
-                   transfer::P2GLayout<dim>::momentum, min_nodal_mass,
+    nodal_velocity(background,
+                   p2g,
+                   p2g,
+                   transfer::P2GLayout<dim>::n_components,
+                   transfer::P2GLayout<dim>::momentum,
+                   min_nodal_mass,
                    kinematics);
     write_output();
     next_output_time = out.interval;
 
-    wall_start = last_progress = wall_seconds();
+    wall_start = last_progress        = wall_seconds();
     double             output_seconds = 0;
     const unsigned int first_step     = current_step;
-    const double end  = params.time.end_time;
-    const double tiny = 1e-12 * std::max(end, 1e-300);
+    const double       end            = params.time.end_time;
+    const double       tiny           = 1e-12 * std::max(end, 1e-300);
     while (current_time < end - tiny &&
            (params.time.max_steps == 0 || current_step < params.time.max_steps))
       {
@@ -491,19 +535,20 @@ namespace mpm
         print_progress(false);
       }
     // Throughput of the time loop without output: the slowest rank counts.
-    const double loop_seconds = Utilities::MPI::max(
-      wall_seconds() - wall_start - output_seconds, comm);
+    const double loop_seconds =
+      Utilities::MPI::max(wall_seconds() - wall_start - output_seconds, comm);
     if (!(current_time >= end - tiny))
       write_output(); // stopped by the step limit
     print_progress(true);
     const double updates = double(particle_handler.n_global_particles()) *
                            (current_step - first_step);
     pcout << "  time loop: " << loop_seconds << " s wall (without output) for "
-          << current_step - first_step << " steps = "
-          << updates / std::max(loop_seconds, 1e-300) / 1e6
+          << current_step - first_step
+          << " steps = " << updates / std::max(loop_seconds, 1e-300) / 1e6
           << " M particle-updates/s" << std::endl;
 
-    if (!out.test_summary.empty() && Utilities::MPI::this_mpi_process(comm) == 0)
+    if (!out.test_summary.empty() &&
+        Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ostringstream s;
         for (const auto &r : summary_rows)
@@ -521,14 +566,16 @@ namespace mpm
     Utilities::System::MemoryStats m;
     Utilities::System::get_memory_stats(m);
     const double peak = Utilities::MPI::sum(double(m.VmHWM) * 1024., comm);
-    const double n    = std::max<double>(1, particle_handler.n_global_particles());
-    const double grid = Utilities::MPI::sum(
-      double(background.triangulation().memory_consumption() +
-             background.dof_handler().memory_consumption()),
-      comm);
-    pcout << "  memory: peak " << peak / 1048576. << " MB over all ranks = "
-          << peak / n / 1024. << " KB per particle (triangulation and nodes "
-          << grid / 1048576. << " MB)" << std::endl;
+    const double n = std::max<double>(1, particle_handler.n_global_particles());
+    const double grid =
+      Utilities::MPI::sum(double(
+                            background.triangulation().memory_consumption() +
+                            background.dof_handler().memory_consumption()),
+                          comm);
+    pcout << "  memory: peak " << peak / 1048576.
+          << " MB over all ranks = " << peak / n / 1024.
+          << " KB per particle (triangulation and nodes " << grid / 1048576.
+          << " MB)" << std::endl;
   }
 
   template <int dim>
@@ -545,8 +592,9 @@ namespace mpm
   std::vector<double>
   Simulator<dim>::benchmark_values()
   {
-    return benchmark ? benchmark->measure(particle_handler, current_time, comm) :
-                       std::vector<double>();
+    return benchmark ?
+             benchmark->measure(particle_handler, current_time, comm) :
+             std::vector<double>();
   }
 
   template <int dim>
@@ -558,7 +606,8 @@ namespace mpm
     const auto &out   = params.output;
     const auto  stats = statistics();
     const auto  extra = benchmark_values();
-    statistics_file->write_row(current_time, current_step, last_dt, stats, extra);
+    statistics_file->write_row(
+      current_time, current_step, last_dt, stats, extra);
     if (out.write_vtu)
       {
         writer->write_particles_vtu(particle_handler, current_time);
@@ -574,10 +623,9 @@ namespace mpm
         // Few digits, scaled quantities: stable across ranks and compilers.
         std::ostringstream s;
         s << std::scientific << std::setprecision(6) << "t " << current_time
-          << " step " << current_step << " n " << stats.n_particles
-          << " mass " << stats.mass << " removed " << stats.removed_mass
-          << " Ekin " << stats.kinetic_energy << " Estrain "
-          << stats.strain_energy;
+          << " step " << current_step << " n " << stats.n_particles << " mass "
+          << stats.mass << " removed " << stats.removed_mass << " Ekin "
+          << stats.kinetic_energy << " Estrain " << stats.strain_energy;
         for (unsigned int d = 0; d < dim; ++d)
           s << " p" << d << ' ' << stats.momentum[d];
         if (dim >= 2)
@@ -609,7 +657,8 @@ namespace mpm
           << "  scheme " << scheme_name(p.time.scheme) << ", FLIP fraction "
           << p.time.flip_fraction << ", end time " << p.time.end_time << '\n'
           << "  time step: "
-          << (p.time.step_control == Parameters::TimeStepping::StepControl::fixed ?
+          << (p.time.step_control ==
+                  Parameters::TimeStepping::StepControl::fixed ?
                 "fixed " + Utilities::to_string(p.time.time_step) :
                 "CFL " + Utilities::to_string(p.time.cfl_number))
           << " (stability limit now " << stable_time_step() << ")\n"
@@ -624,10 +673,10 @@ namespace mpm
     const double now = wall_seconds();
     if (!force && now - last_progress < params.output.progress_interval)
       return;
-    last_progress        = now;
-    const double done    = params.time.end_time > 0 ?
-                             current_time / params.time.end_time : 1.;
-    const double elapsed = now - wall_start;
+    last_progress = now;
+    const double done =
+      params.time.end_time > 0 ? current_time / params.time.end_time : 1.;
+    const double       elapsed = now - wall_start;
     std::ostringstream s;
     s << "  step " << std::setw(8) << current_step << "  t = " << std::setw(11)
       << std::setprecision(5) << current_time << "  dt = " << std::setw(11)

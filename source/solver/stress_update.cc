@@ -1,39 +1,34 @@
 #include <mpm/grid/grid_update.h>
+#include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/solver/stress_update.h>
 
 #include <cmath>
 #include <sstream>
 
-namespace mpm
-{
+namespace mpm {
   using namespace dealii;
 
   template <int dim>
   StressUpdateResult
-  update_stress(const BackgroundGrid<dim> &      grid,
+  update_stress(const BackgroundGrid<dim>       &grid,
                 Particles::ParticleHandler<dim> &particles,
-                const std::vector<Body<dim>> &   bodies,
-                const NodalVector &              kinematics,
+                const std::vector<Body<dim>>    &bodies,
+                const NodalVector               &kinematics,
                 const double                     dt)
   {
-    using L                   = ParticleLayout<dim>;
-    using K                   = KinematicsLayout<dim>;
-    constexpr unsigned int nv = shape_functions::n_q1<dim>;
-    const double *         in = kinematics.begin();
-    StressUpdateResult     result;
-    double                 N[nv];
-    Tensor<1, dim>         G[nv];
+    using L                       = ParticleLayout<dim>;
+    using K                       = KinematicsLayout<dim>;
+    constexpr unsigned int     nv = shape_functions::n_q1<dim>;
+    const double              *in = kinematics.begin();
+    StressUpdateResult         result;
+    double                     N[nv];
+    Tensor<1, dim>             G[nv];
     materials::PointKinematics pk;
     pk.dt = dt;
-    for (const auto &cell : grid.triangulation().active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
-        const auto pic = particles.particles_in_cell(cell);
-        if (pic.begin() == pic.end())
-          continue;
-        const auto &        geo   = grid.geometry(cell);
+    for_each_cell_with_particles(
+      grid, particles, [&](const auto &cell, const auto &pic) {
+        const auto         &geo   = grid.geometry(cell);
         const unsigned int *nodes = grid.nodes(cell);
         const double        h     = grid.cell_height(cell);
         for (auto &p : pic)
@@ -47,22 +42,22 @@ namespace mpm
                   for (unsigned int j = 0; j < dim; ++j)
                     grad_v[i][j] += k[K::velocity + i] * G[v][j];
               }
-            double *             prop = p.get_properties().data();
+            double              *prop  = p.get_properties().data();
             const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
             Tensor<2, dim>       F     = F_old + dt * grad_v * F_old;
             store_matrix<dim>(F, prop + L::F);
-            const double J    = determinant(F);
-            prop[L::volume]   = J * prop[L::volume0];
+            const double J  = determinant(F);
+            prop[L::volume] = J * prop[L::volume0];
 
             const auto &material =
               *bodies[static_cast<unsigned int>(prop[L::body])].material;
-            pk.velocity_gradient = embed<dim>(grad_v, 0.);
-            pk.F                 = embed<dim>(F, 1.);
+            pk.velocity_gradient        = embed<dim>(grad_v, 0.);
+            pk.F                        = embed<dim>(F, 1.);
             SymmetricTensor<2, 3> sigma = load_stress(prop + L::stress);
-            material.update_stress(
-              pk,
-              sigma,
-              ArrayView<double>(prop + L::history, material.n_history()));
+            material.update_stress(pk,
+                                   sigma,
+                                   ArrayView<double>(prop + L::history,
+                                                     material.n_history()));
             store_stress(sigma, prop + L::stress);
 
             double speed2 = 0;
@@ -84,15 +79,15 @@ namespace mpm
                 result.error = s.str();
               }
           }
-      }
+      });
     return result;
   }
 
   template <int dim>
   double
-  stable_time_step(const BackgroundGrid<dim> &      grid,
+  stable_time_step(const BackgroundGrid<dim>       &grid,
                    Particles::ParticleHandler<dim> &particles,
-                   const std::vector<Body<dim>> &   bodies)
+                   const std::vector<Body<dim>>    &bodies)
   {
     using L   = ParticleLayout<dim>;
     double dt = std::numeric_limits<double>::max();
@@ -109,8 +104,8 @@ namespace mpm
               v2 += prop[L::velocity + d] * prop[L::velocity + d];
             const auto &material =
               *bodies[static_cast<unsigned int>(prop[L::body])].material;
-            const double c =
-              material.wave_speed(embed<dim>(load_matrix<dim>(prop + L::F), 1.));
+            const double c = material.wave_speed(
+              embed<dim>(load_matrix<dim>(prop + L::F), 1.));
             dt = std::min(dt, h / (c + std::sqrt(v2)));
           }
       }
@@ -118,21 +113,33 @@ namespace mpm
   }
 
   template StressUpdateResult
-  update_stress<1>(const BackgroundGrid<1> &, Particles::ParticleHandler<1> &,
-                   const std::vector<Body<1>> &, const NodalVector &, double);
+  update_stress<1>(const BackgroundGrid<1> &,
+                   Particles::ParticleHandler<1> &,
+                   const std::vector<Body<1>> &,
+                   const NodalVector &,
+                   double);
   template StressUpdateResult
-  update_stress<2>(const BackgroundGrid<2> &, Particles::ParticleHandler<2> &,
-                   const std::vector<Body<2>> &, const NodalVector &, double);
+  update_stress<2>(const BackgroundGrid<2> &,
+                   Particles::ParticleHandler<2> &,
+                   const std::vector<Body<2>> &,
+                   const NodalVector &,
+                   double);
   template StressUpdateResult
-  update_stress<3>(const BackgroundGrid<3> &, Particles::ParticleHandler<3> &,
-                   const std::vector<Body<3>> &, const NodalVector &, double);
+  update_stress<3>(const BackgroundGrid<3> &,
+                   Particles::ParticleHandler<3> &,
+                   const std::vector<Body<3>> &,
+                   const NodalVector &,
+                   double);
   template double
-  stable_time_step<1>(const BackgroundGrid<1> &, Particles::ParticleHandler<1> &,
+  stable_time_step<1>(const BackgroundGrid<1> &,
+                      Particles::ParticleHandler<1> &,
                       const std::vector<Body<1>> &);
   template double
-  stable_time_step<2>(const BackgroundGrid<2> &, Particles::ParticleHandler<2> &,
+  stable_time_step<2>(const BackgroundGrid<2> &,
+                      Particles::ParticleHandler<2> &,
                       const std::vector<Body<2>> &);
   template double
-  stable_time_step<3>(const BackgroundGrid<3> &, Particles::ParticleHandler<3> &,
+  stable_time_step<3>(const BackgroundGrid<3> &,
+                      Particles::ParticleHandler<3> &,
                       const std::vector<Body<3>> &);
 } // namespace mpm

@@ -1,41 +1,36 @@
 #include <mpm/grid/grid_update.h>
+#include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/transfer/grid_to_particle.h>
 
 #include <cmath>
 #include <sstream>
 
-namespace mpm
-{
-  namespace transfer
-  {
+namespace mpm {
+  namespace transfer {
     using namespace dealii;
 
     template <int dim>
     std::string
-    grid_to_particle(const BackgroundGrid<dim> &      grid,
+    grid_to_particle(const BackgroundGrid<dim>       &grid,
                      Particles::ParticleHandler<dim> &particles,
-                     const NodalVector &              kinematics,
+                     const NodalVector               &kinematics,
                      const double                     dt,
                      const double                     flip)
     {
       using L                   = ParticleLayout<dim>;
       using K                   = KinematicsLayout<dim>;
       constexpr unsigned int nv = shape_functions::n_q1<dim>;
-      const double *         in = kinematics.begin();
+      const double          *in = kinematics.begin();
       std::string            error;
       double                 N[nv];
-      for (const auto &cell : grid.triangulation().active_cell_iterators())
-        {
-          if (!cell->is_locally_owned())
-            continue;
-          const auto pic = particles.particles_in_cell(cell);
-          if (pic.begin() == pic.end())
-            continue;
+      for_each_cell_with_particles(
+        grid, particles, [&](const auto &cell, const auto &pic) {
           const unsigned int *nodes = grid.nodes(cell);
           for (auto &p : pic)
             {
-              shape_functions::Q1Cell<dim>::values(p.get_reference_location(), N);
+              shape_functions::Q1Cell<dim>::values(p.get_reference_location(),
+                                                   N);
               double v_grid[dim] = {}, dv[dim] = {};
               for (unsigned int v = 0; v < nv; ++v)
                 {
@@ -46,13 +41,13 @@ namespace mpm
                       dv[d] += N[v] * k[K::increment + d];
                     }
                 }
-              double *   prop = p.get_properties().data();
+              double    *prop = p.get_properties().data();
               Point<dim> x    = p.get_location();
               bool       ok   = true;
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   double &vp = prop[L::velocity + d];
-                  vp = flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
+                  vp         = flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
                   x[d] += dt * v_grid[d];
                   ok = ok && std::isfinite(vp) && std::isfinite(x[d]);
                 }
@@ -65,18 +60,27 @@ namespace mpm
                 }
               p.set_location(x);
             }
-        }
+        });
       return error;
     }
 
     template std::string
-    grid_to_particle<1>(const BackgroundGrid<1> &, Particles::ParticleHandler<1> &,
-                        const NodalVector &, double, double);
+    grid_to_particle<1>(const BackgroundGrid<1> &,
+                        Particles::ParticleHandler<1> &,
+                        const NodalVector &,
+                        double,
+                        double);
     template std::string
-    grid_to_particle<2>(const BackgroundGrid<2> &, Particles::ParticleHandler<2> &,
-                        const NodalVector &, double, double);
+    grid_to_particle<2>(const BackgroundGrid<2> &,
+                        Particles::ParticleHandler<2> &,
+                        const NodalVector &,
+                        double,
+                        double);
     template std::string
-    grid_to_particle<3>(const BackgroundGrid<3> &, Particles::ParticleHandler<3> &,
-                        const NodalVector &, double, double);
+    grid_to_particle<3>(const BackgroundGrid<3> &,
+                        Particles::ParticleHandler<3> &,
+                        const NodalVector &,
+                        double,
+                        double);
   } // namespace transfer
 } // namespace mpm

@@ -1,32 +1,32 @@
+#include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/transfer/particle_to_grid.h>
 
-namespace mpm
-{
-  namespace transfer
-  {
+namespace mpm {
+  namespace transfer {
     using namespace dealii;
 
     template <int dim>
     void
-    particle_to_grid(const BackgroundGrid<dim> &      grid,
+    particle_to_grid(const BackgroundGrid<dim>       &grid,
                      Particles::ParticleHandler<dim> &particles,
-                     const std::vector<Body<dim>> &   bodies,
+                     const std::vector<Body<dim>>    &bodies,
                      const double                     time,
                      const P2GContent                 content,
-                     NodalVector &                    nodal)
+                     NodalVector                     &nodal)
     {
-      using L                      = ParticleLayout<dim>;
-      constexpr unsigned int nv    = shape_functions::n_q1<dim>;
-      const bool momentum_only     = content == P2GContent::momentum;
-      const unsigned int nc        = momentum_only ? dim : P2GLayout<dim>::n_components;
-      const unsigned int off_m     = 0;
-      const unsigned int off_p     = momentum_only ? 0 : 1;
-      const unsigned int off_f     = 1 + dim;
-      const bool do_mass           = content == P2GContent::mass_momentum_force ||
+      using L                              = ParticleLayout<dim>;
+      constexpr unsigned int nv            = shape_functions::n_q1<dim>;
+      const bool             momentum_only = content == P2GContent::momentum;
+      const unsigned int     nc =
+        momentum_only ? dim : P2GLayout<dim>::n_components;
+      const unsigned int off_m   = 0;
+      const unsigned int off_p   = momentum_only ? 0 : 1;
+      const unsigned int off_f   = 1 + dim;
+      const bool         do_mass = content == P2GContent::mass_momentum_force ||
                            content == P2GContent::mass_momentum;
-      const bool do_momentum       = content != P2GContent::force;
-      const bool do_force          = content == P2GContent::mass_momentum_force ||
+      const bool do_momentum = content != P2GContent::force;
+      const bool do_force    = content == P2GContent::mass_momentum_force ||
                             content == P2GContent::force;
 
       std::vector<char> body_loaded(bodies.size());
@@ -41,23 +41,18 @@ namespace mpm
 
       double         N[nv];
       Tensor<1, dim> G[nv];
-      for (const auto &cell : grid.triangulation().active_cell_iterators())
-        {
-          if (!cell->is_locally_owned())
-            continue;
-          const auto pic = particles.particles_in_cell(cell);
-          if (pic.begin() == pic.end())
-            continue;
-          const auto &        geo   = grid.geometry(cell);
+      for_each_cell_with_particles(
+        grid, particles, [&](const auto &cell, const auto &pic) {
+          const auto         &geo   = grid.geometry(cell);
           const unsigned int *nodes = grid.nodes(cell);
 
           // Accumulate per cell, then scatter once.
           double local[nv][1 + 2 * dim] = {};
           for (const auto &p : pic)
             {
-              const Point<dim>   xi   = p.get_reference_location();
-              const double *     prop = p.get_properties().data();
-              const double       m    = prop[L::mass];
+              const Point<dim> xi   = p.get_reference_location();
+              const double    *prop = p.get_properties().data();
+              const double     m    = prop[L::mass];
               if (do_force)
                 geo.values_and_gradients(xi, N, G);
               else
@@ -66,8 +61,8 @@ namespace mpm
               if (do_force)
                 {
                   // -V sigma grad N, with the in-plane part of the stress
-                  const double V = prop[L::volume];
-                  const double *s = prop + L::stress;
+                  const double   V = prop[L::volume];
+                  const double  *s = prop + L::stress;
                   Tensor<2, dim> sigma;
                   sigma[0][0] = s[0];
                   if constexpr (dim >= 2)
@@ -81,18 +76,25 @@ namespace mpm
                       sigma[1][2] = sigma[2][1] = s[3];
                       sigma[0][2] = sigma[2][0] = s[4];
                     }
-                  const unsigned int b = static_cast<unsigned int>(prop[L::body]);
+                  const unsigned int b =
+                    static_cast<unsigned int>(prop[L::body]);
                   double ext[dim] = {};
                   if (body_loaded[b])
                     {
-                      bodies[b].body_force_at(p.get_location(), prop + L::X, time, ext);
+                      bodies[b].body_force_at(p.get_location(),
+                                              prop + L::X,
+                                              time,
+                                              ext);
                       for (unsigned int d = 0; d < dim; ++d)
                         ext[d] *= m;
                     }
                   if (prop[L::traction_area] > 0)
                     {
                       double t[dim];
-                      bodies[b].traction_at(p.get_location(), prop + L::X, time, t);
+                      bodies[b].traction_at(p.get_location(),
+                                            prop + L::X,
+                                            time,
+                                            t);
                       for (unsigned int d = 0; d < dim; ++d)
                         ext[d] += t[d] * prop[L::traction_area];
                     }
@@ -125,21 +127,30 @@ namespace mpm
                 for (unsigned int d = 0; d < dim; ++d)
                   node[off_f + d] += local[v][1 + dim + d];
             }
-        }
+        });
       nodal.compress(VectorOperation::add);
     }
 
     template void
-    particle_to_grid<1>(const BackgroundGrid<1> &, Particles::ParticleHandler<1> &,
-                        const std::vector<Body<1>> &, double, P2GContent,
+    particle_to_grid<1>(const BackgroundGrid<1> &,
+                        Particles::ParticleHandler<1> &,
+                        const std::vector<Body<1>> &,
+                        double,
+                        P2GContent,
                         NodalVector &);
     template void
-    particle_to_grid<2>(const BackgroundGrid<2> &, Particles::ParticleHandler<2> &,
-                        const std::vector<Body<2>> &, double, P2GContent,
+    particle_to_grid<2>(const BackgroundGrid<2> &,
+                        Particles::ParticleHandler<2> &,
+                        const std::vector<Body<2>> &,
+                        double,
+                        P2GContent,
                         NodalVector &);
     template void
-    particle_to_grid<3>(const BackgroundGrid<3> &, Particles::ParticleHandler<3> &,
-                        const std::vector<Body<3>> &, double, P2GContent,
+    particle_to_grid<3>(const BackgroundGrid<3> &,
+                        Particles::ParticleHandler<3> &,
+                        const std::vector<Body<3>> &,
+                        double,
+                        P2GContent,
                         NodalVector &);
   } // namespace transfer
 } // namespace mpm

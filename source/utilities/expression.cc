@@ -1,17 +1,15 @@
 #include <deal.II/base/utilities.h>
 
-#include <muParser.h>
-
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
 
 #include <cctype>
 #include <set>
 
-namespace mpm
-{
-  namespace
-  {
+#include <muParser.h>
+
+namespace mpm {
+  namespace {
     /// Identifiers used in an expression (names of variables, constants
     /// and functions alike).
     std::set<std::string>
@@ -59,20 +57,20 @@ namespace mpm
   template <int n_vars>
   struct Expression<n_vars>::Parsers
   {
-    std::vector<mu::Parser>           components;
-    std::array<double, n_vars + 1>    variables{}; // coordinates, then t
+    std::vector<mu::Parser>        components;
+    std::array<double, n_vars + 1> variables{}; // coordinates, then t
   };
 
   template <int n_vars>
-  Expression<n_vars>::Expression(
-    const std::string &                  text,
-    const unsigned int                   n_components,
-    const std::string &                  variables,
-    const std::map<std::string, double> &constants,
-    const bool                           time_dependent,
-    const std::string &                  where)
+  Expression<n_vars>::Expression(const std::string &text,
+                                 const unsigned int n_components,
+                                 const std::string &variables,
+                                 const std::map<std::string, double> &constants,
+                                 const bool         time_dependent,
+                                 const std::string &where)
   {
-    std::vector<std::string> parts = dealii::Utilities::split_string_list(text, ';');
+    std::vector<std::string> parts =
+      dealii::Utilities::split_string_list(text, ';');
     if (parts.size() != n_components)
       throw InputError(where + " = '" + text + "': expected " +
                        std::to_string(n_components) +
@@ -123,7 +121,7 @@ namespace mpm
   void
   Expression<n_vars>::value(const dealii::Point<n_vars> &p,
                             const double                 t,
-                            double *                     out) const
+                            double                      *out) const
   {
     if (constant)
       {

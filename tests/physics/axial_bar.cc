@@ -14,7 +14,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  mpm_test::Case<1> c(R"(
+  mpm_test::Case<1>                        c(R"(
 set Constants = L=25, E=100, rho=1, v0=0.1
 set Benchmark = axial bar
 subsection Grid
@@ -41,25 +41,31 @@ subsection Bodies
     end
   end
 end)");
-  auto &       sim  = *c.simulator;
-  const auto   s0   = sim.statistics();
-  const double dt   = 0.2 * (25. / 16) / 10.;
-  double       worst = 0, worst_cm = 0;
+  auto                                    &sim   = *c.simulator;
+  const auto                               s0    = sim.statistics();
+  const double                             dt    = 0.2 * (25. / 16) / 10.;
+  double                                   worst = 0, worst_cm = 0;
   for (unsigned int n = 0; n < 320; ++n)
     {
       sim.do_time_step(dt);
       const auto b = sim.benchmark_values();
-      worst    = std::max(worst, b[2]);
-      worst_cm = std::max(worst_cm, std::abs(b[0] - b[1]));
+      worst        = std::max(worst, b[2]);
+      worst_cm     = std::max(worst_cm, std::abs(b[0] - b[1]));
     }
-  const auto b  = sim.benchmark_values();
-  const auto s1 = sim.statistics();
+  const auto   b         = sim.benchmark_values();
+  const auto   s1        = sim.statistics();
   const double amplitude = 0.1 / (M_PI / 50 * 25);
   mpm_test::check_small("time - T", sim.time() - 10., 1e-10);
-  mpm_test::check_small("v_cm error at T / amplitude", (b[0] - b[1]) / amplitude, 0.01);
-  mpm_test::check_small("max v_cm error over the period / amplitude", worst_cm / amplitude, 0.02);
+  mpm_test::check_small("v_cm error at T / amplitude",
+                        (b[0] - b[1]) / amplitude,
+                        0.01);
+  mpm_test::check_small("max v_cm error over the period / amplitude",
+                        worst_cm / amplitude,
+                        0.02);
   mpm_test::check_small("max RMS velocity error / v0", worst, 0.02);
   mpm_test::check_small("energy change / E0",
-                        (s1.kinetic_energy + s1.strain_energy - s0.kinetic_energy) /
-                          s0.kinetic_energy, 0.02);
+                        (s1.kinetic_energy + s1.strain_energy -
+                         s0.kinetic_energy) /
+                          s0.kinetic_energy,
+                        0.02);
 }

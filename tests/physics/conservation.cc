@@ -19,7 +19,8 @@ subsection Grid
 end
 subsection Time stepping
   set Scheme = )" + scheme + R"(
-  set FLIP fraction = )" + flip + R"(
+  set FLIP fraction = )" + flip +
+                            R"(
 end
 subsection Bodies
   subsection Body 0
@@ -35,18 +36,22 @@ subsection Bodies
     end
   end
 end)");
-        auto &     sim = *c.simulator;
-        const auto s0  = sim.statistics();
-        const double dt = 0.2 * sim.stable_time_step();
+        auto             &sim = *c.simulator;
+        const auto        s0  = sim.statistics();
+        const double      dt  = 0.2 * sim.stable_time_step();
         for (unsigned int n = 0; n < 30; ++n)
           sim.do_time_step(dt);
-        const auto   s1 = sim.statistics();
-        const double p  = std::hypot(s0.momentum[0], s0.momentum[1]);
+        const auto        s1  = sim.statistics();
+        const double      p   = std::hypot(s0.momentum[0], s0.momentum[1]);
         const std::string tag = scheme + ", FLIP " + flip + ": ";
-        mpm_test::check_small(tag + "mass change", (s1.mass - s0.mass) / s0.mass, 1e-14);
+        mpm_test::check_small(tag + "mass change",
+                              (s1.mass - s0.mass) / s0.mass,
+                              1e-14);
         mpm_test::check_small(tag + "momentum x change",
-                              (s1.momentum[0] - s0.momentum[0]) / p, 1e-12);
+                              (s1.momentum[0] - s0.momentum[0]) / p,
+                              1e-12);
         mpm_test::check_small(tag + "momentum y change",
-                              (s1.momentum[1] - s0.momentum[1]) / p, 1e-12);
+                              (s1.momentum[1] - s0.momentum[1]) / p,
+                              1e-12);
       }
 }

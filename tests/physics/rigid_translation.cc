@@ -32,34 +32,38 @@ subsection Bodies
     end
   end
 end)");
-  auto &       sim = *c.simulator;
-  const auto   n0  = sim.particles().n_global_particles();
-  const double dt  = 1e-3;
+  auto             &sim = *c.simulator;
+  const auto        n0  = sim.particles().n_global_particles();
+  const double      dt  = 1e-3;
   for (unsigned int n = 0; n < 500; ++n) // 0.5 m: about four cells
     sim.do_time_step(dt);
   const double t = sim.time();
 
-  double max_position = 0, max_stress = 0, max_mapping = 0;
+  double             max_position = 0, max_stress = 0, max_mapping = 0;
   unsigned long long id_sum = 0;
   for (const auto &cell : sim.grid().triangulation().active_cell_iterators())
     if (cell->is_locally_owned())
       for (const auto &p : sim.particles().particles_in_cell(cell))
         {
-          const double *prop = p.get_properties().data();
-          const dealii::Point<2> exact(prop[L::X] + 1.0 * t, prop[L::X + 1] + 0.7 * t);
-          max_position = std::max(max_position, p.get_location().distance(exact));
+          const double          *prop = p.get_properties().data();
+          const dealii::Point<2> exact(prop[L::X] + 1.0 * t,
+                                       prop[L::X + 1] + 0.7 * t);
+          max_position =
+            std::max(max_position, p.get_location().distance(exact));
           for (unsigned int s = 0; s < 6; ++s)
             max_stress = std::max(max_stress, std::abs(prop[L::stress + s]));
           max_mapping = std::max(max_mapping,
-                                 sim.grid().geometry(cell).map(p.get_reference_location())
+                                 sim.grid()
+                                   .geometry(cell)
+                                   .map(p.get_reference_location())
                                    .distance(p.get_location()));
           id_sum += p.get_id();
         }
   const MPI_Comm comm = MPI_COMM_WORLD;
-  max_position = dealii::Utilities::MPI::max(max_position, comm);
-  max_stress   = dealii::Utilities::MPI::max(max_stress, comm);
-  max_mapping  = dealii::Utilities::MPI::max(max_mapping, comm);
-  id_sum       = dealii::Utilities::MPI::sum(id_sum, comm);
+  max_position        = dealii::Utilities::MPI::max(max_position, comm);
+  max_stress          = dealii::Utilities::MPI::max(max_stress, comm);
+  max_mapping         = dealii::Utilities::MPI::max(max_mapping, comm);
+  id_sum              = dealii::Utilities::MPI::sum(id_sum, comm);
 
   // deal.II's sort must find every particle where the relocation put it.
   std::map<dealii::types::particle_index, dealii::Point<2>> before;
@@ -70,15 +74,21 @@ end)");
   for (const auto &p : sim.particles())
     {
       const auto it = before.find(p.get_id());
-      moved = std::max(moved, it == before.end() ? 1. :
-                                p.get_reference_location().distance(it->second));
+      moved         = std::max(moved,
+                       it == before.end() ?
+                                 1. :
+                                 p.get_reference_location().distance(it->second));
     }
   moved = dealii::Utilities::MPI::max(moved, comm);
   sim.particles().update_cached_numbers();
 
   mpm_test::check_small("particles lost or duplicated",
-                        double(sim.particles().n_global_particles()) - double(n0), 0);
-  mpm_test::check_small("id checksum", double(id_sum) - double(n0 * (n0 - 1) / 2), 0);
+                        double(sim.particles().n_global_particles()) -
+                          double(n0),
+                        0);
+  mpm_test::check_small("id checksum",
+                        double(id_sum) - double(n0 * (n0 - 1) / 2),
+                        0);
   mpm_test::check_small("max |x - (X + v t)|", max_position, 1e-12);
   mpm_test::check_small("max |stress| [Pa]", max_stress, 1e-9);
   mpm_test::check_small("max |x(xi) - x|", max_mapping, 1e-12);

@@ -11,7 +11,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  mpm_test::Case<2> c(R"(
+  mpm_test::Case<2>                        c(R"(
 set Kinematic assumption = plane stress
 set Constants = a=1, omega=1, nu=0.3, rho=1000
 set Benchmark = spinning disk
@@ -38,10 +38,11 @@ subsection Bodies
     end
   end
 end)");
-  auto &     sim = *c.simulator;
-  const auto s0  = sim.statistics();
+  auto                                    &sim = *c.simulator;
+  const auto                               s0  = sim.statistics();
   while (sim.time() < M_PI / 2)
-    sim.do_time_step(std::min(0.5 * sim.stable_time_step(), M_PI / 2 - sim.time()));
+    sim.do_time_step(
+      std::min(0.5 * sim.stable_time_step(), M_PI / 2 - sim.time()));
   const auto b  = sim.benchmark_values();
   const auto s1 = sim.statistics();
   mpm_test::log() << "RMS (sigma_rr - exact)/sigma0 " << b[0]
@@ -49,5 +50,6 @@ end)");
                   << b[2] << std::endl;
   mpm_test::check_small("angular momentum change",
                         (s1.angular_momentum[2] - s0.angular_momentum[2]) /
-                          s0.angular_momentum[2], 0.02);
+                          s0.angular_momentum[2],
+                        0.02);
 }

@@ -50,12 +50,12 @@ subsection Bodies
     end
   end
 end)");
-  auto &sim = *c.simulator;
+  auto             &sim = *c.simulator;
   while (sim.time() < 2.)
     sim.do_time_step(0.5 * sim.stable_time_step());
 
-  const double t0 = 2;
-  double x_t = 0;
+  const double t0  = 2;
+  double       x_t = 0;
   for (const auto &p : sim.particles())
     if (p.get_properties()[L::traction_area] > 0)
       x_t = p.get_location()[0];
@@ -72,10 +72,13 @@ end)");
       area += prop[L::traction_area];
       max_v = std::max(max_v, std::abs(prop[L::velocity]));
     }
-  mpm_test::log() << "tip particle at " << x_t << ", last-cell J sigma / t0 = "
-                  << (x_t - 0.9) / 0.1 << std::endl;
+  mpm_test::log() << "tip particle at " << x_t
+                  << ", last-cell J sigma / t0 = " << (x_t - 0.9) / 0.1
+                  << std::endl;
   mpm_test::check_small("traction area - 1", area - 1., 1e-14);
-  mpm_test::check_small("max |J sigma - t0|/t0, interior cells", interior, 1e-6);
+  mpm_test::check_small("max |J sigma - t0|/t0, interior cells",
+                        interior,
+                        1e-6);
   mpm_test::check_small("max |J sigma - N(x_t) t0|/t0, last cell", last, 1e-6);
   mpm_test::check_small("max |v| at rest", max_v, 1e-6);
 }

@@ -2,6 +2,10 @@
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK
 #endif
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
 #include <mpm/materials/elasticity.h>
 #include <mpm/materials/linear_elastic.h>
 #include <mpm/materials/material.h>
@@ -10,17 +14,13 @@
 #include <mpm/materials/von_mises_plasticity.h>
 #include <mpm/utilities/input_error.h>
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/symmetric_tensor.h>
-#include <deal.II/base/tensor.h>
-
-#include <boost/test/unit_test.hpp>
-
 #include <cmath>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <boost/test/unit_test.hpp>
 
 using namespace mpm;
 using namespace mpm::materials;
@@ -28,16 +28,16 @@ using dealii::ArrayView;
 using dealii::SymmetricTensor;
 using dealii::Tensor;
 
-namespace
-{
+namespace {
   using Parameters = std::map<std::string, std::string>;
 
   /// A model of type T with the given parameters (others at defaults).
   template <typename T>
   T
-  make_model(const Parameters &         parameters,
-             const KinematicAssumption k       = KinematicAssumption::three_dimensional,
-             const double              density = 1000)
+  make_model(
+    const Parameters         &parameters,
+    const KinematicAssumption k       = KinematicAssumption::three_dimensional,
+    const double              density = 1000)
   {
     dealii::ParameterHandler prm;
     T::declare_parameters(prm);
@@ -113,10 +113,10 @@ namespace
    * accumulated Hughes-Winget angle and that the invariants are unchanged.
    */
   void
-  check_rigid_spin(const Material &            material,
+  check_rigid_spin(const Material              &material,
                    const SymmetricTensor<2, 3> &initial_stress,
-                   const Tensor<1, 3> &        axis,
-                   std::vector<double>         history = {})
+                   const Tensor<1, 3>          &axis,
+                   std::vector<double>          history = {})
   {
     const double       omega   = 2.0;
     const double       dt      = 1e-3;
@@ -130,10 +130,8 @@ namespace
     for (unsigned int n = 1; n <= n_steps; ++n)
       {
         point.F = rotation(axis, omega * n * dt);
-        material.update_stress(point,
-                               stress,
-                               ArrayView<double>(history.data(),
-                                                 history.size()));
+        material.update_stress(
+          point, stress, ArrayView<double>(history.data(), history.size()));
       }
 
     // The Cayley transform rotates by 2 atan(omega dt / 2) per step.
@@ -142,8 +140,8 @@ namespace
     BOOST_TEST(relative_difference(rotate(stress, dealii::transpose(Q)),
                                    initial_stress) < 1e-10);
 
-    const auto i0 = invariants(initial_stress);
-    const auto i1 = invariants(stress);
+    const auto   i0    = invariants(initial_stress);
+    const auto   i1    = invariants(stress);
     const double scale = initial_stress.norm();
     BOOST_TEST(std::abs(i1[0] - i0[0]) < 1e-10 * scale);
     BOOST_TEST(std::abs(i1[1] - i0[1]) < 1e-10 * scale * scale);
@@ -174,13 +172,13 @@ namespace
   /// Constant velocity gradient for n_steps steps, F integrated with
   /// F <- (I + dt L) F. Returns the accumulated strain sum dt sym(L).
   SymmetricTensor<2, 3>
-  drive(const Material &       material,
-        const Tensor<2, 3> &   L,
+  drive(const Material        &material,
+        const Tensor<2, 3>    &L,
         const double           dt,
         const unsigned int     n_steps,
         SymmetricTensor<2, 3> &stress,
-        Tensor<2, 3> &         F,
-        std::vector<double> &  history)
+        Tensor<2, 3>          &F,
+        std::vector<double>   &history)
   {
     PointKinematics point;
     point.velocity_gradient = L;
@@ -189,10 +187,8 @@ namespace
       {
         F       = (identity() + dt * L) * F;
         point.F = F;
-        material.update_stress(point,
-                               stress,
-                               ArrayView<double>(history.data(),
-                                                 history.size()));
+        material.update_stress(
+          point, stress, ArrayView<double>(history.data(), history.size()));
       }
     return n_steps * dt * dealii::symmetrize(L);
   }
@@ -229,7 +225,7 @@ BOOST_AUTO_TEST_CASE(linear_elastic_rigid_spin)
 
 BOOST_AUTO_TEST_CASE(plasticity_rigid_spin)
 {
-  Parameters p = steel;
+  Parameters p           = steel;
   p["Yield stress"]      = "250e6";
   p["Hardening modulus"] = "1e9";
   const auto model       = make_model<VonMisesPlasticity>(p);
@@ -325,15 +321,15 @@ BOOST_AUTO_TEST_CASE(energy_after_small_strain_path)
             L[0][2] = L[2][0] = -0.3;
           }
 
-        SymmetricTensor<2, 3> stress;
-        Tensor<2, 3>          F = identity();
-        std::vector<double>   history;
+        SymmetricTensor<2, 3>       stress;
+        Tensor<2, 3>                F = identity();
+        std::vector<double>         history;
         const SymmetricTensor<2, 3> eps =
           drive(model, L, 1e-6, 100, stress, F, history);
 
         // Symmetric L: no rotation, so the stress is exactly C : eps.
-        const double lambda = model.elastic_constants().lambda();
-        const double mu     = model.elastic_constants().mu();
+        const double          lambda = model.elastic_constants().lambda();
+        const double          mu     = model.elastic_constants().mu();
         SymmetricTensor<2, 3> expected =
           lambda * dealii::trace(eps) * dealii::unit_symmetric_tensor<3>() +
           2 * mu * eps;
@@ -401,9 +397,9 @@ BOOST_AUTO_TEST_CASE(plane_stress)
     Tensor<2, 3> L;
     L[0][0] = 1;
     L[1][1] = -nu;
-    SymmetricTensor<2, 3> stress;
-    Tensor<2, 3>          F = identity();
-    std::vector<double>   history;
+    SymmetricTensor<2, 3>       stress;
+    Tensor<2, 3>                F = identity();
+    std::vector<double>         history;
     const SymmetricTensor<2, 3> eps =
       drive(model, L, 1e-6, 200, stress, F, history);
     BOOST_TEST(relative_difference(stress[0][0], E * eps[0][0]) < 1e-12);
@@ -453,11 +449,11 @@ BOOST_AUTO_TEST_CASE(energy_derivative_is_stress_power)
       {
         const auto model = make_model<NeoHookean>(steel, k);
         // Embed: no out-of-plane rows/columns of the rate.
-        Tensor<2, 3> Fdot = A;
-        const unsigned int dim =
-          k == KinematicAssumption::three_dimensional ? 3 :
-          k == KinematicAssumption::plane_strain      ? 2 :
-                                                        1;
+        Tensor<2, 3>       Fdot = A;
+        const unsigned int dim  = k == KinematicAssumption::three_dimensional ?
+                                    3 :
+                                  k == KinematicAssumption::plane_strain ? 2 :
+                                                                           1;
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = 0; j < 3; ++j)
             if (i >= dim || j >= dim)
@@ -470,8 +466,8 @@ BOOST_AUTO_TEST_CASE(energy_derivative_is_stress_power)
         };
         for (const double t : {0.1, 0.5, 1.0})
           {
-            const Tensor<2, 3> F = identity() + t * Fdot;
-            const double       h = 1e-5;
+            const Tensor<2, 3> F       = identity() + t * Fdot;
+            const double       h       = 1e-5;
             const double       dpsi_dt = (psi(t + h) - psi(t - h)) / (2 * h);
             const SymmetricTensor<2, 3> D =
               dealii::symmetrize(Fdot * dealii::invert(F));
@@ -485,19 +481,19 @@ BOOST_AUTO_TEST_CASE(energy_derivative_is_stress_power)
 
 BOOST_AUTO_TEST_CASE(stress_and_wave_speed)
 {
-  const auto   model  = make_model<NeoHookean>(steel, KinematicAssumption::three_dimensional, 7800);
+  const auto model =
+    make_model<NeoHookean>(steel, KinematicAssumption::three_dimensional, 7800);
   const double lambda = model.elastic_constants().lambda();
   const double mu     = model.elastic_constants().mu();
 
   // Stress free and small-strain p-wave speed in the reference state.
   BOOST_TEST(model.cauchy_stress(identity()).norm() == 0.0);
   BOOST_TEST(relative_difference(model.wave_speed(identity()),
-                                 std::sqrt((lambda + 2 * mu) / 7800)) <
-             1e-14);
+                                 std::sqrt((lambda + 2 * mu) / 7800)) < 1e-14);
 
   // Uniaxial stretch: sigma_xx = (mu (s^2 - 1) + lambda ln s) / s.
-  Tensor<2, 3> F = identity();
-  F[0][0]        = 1.3;
+  Tensor<2, 3> F                = identity();
+  F[0][0]                       = 1.3;
   const SymmetricTensor<2, 3> s = model.cauchy_stress(F);
   BOOST_TEST(relative_difference(s[0][0],
                                  (mu * (1.69 - 1) + lambda * std::log(1.3)) /
@@ -543,9 +539,9 @@ BOOST_AUTO_TEST_CASE(equation_of_state_and_energy)
 
         for (const double J : {0.8, 0.95, 1.05, 1.3})
           {
-            const double p_expected =
-              eos == "linear" ? K * (1 / J - 1) :
-                                K / gamma * (std::pow(J, -gamma) - 1);
+            const double p_expected = eos == "linear" ?
+                                        K * (1 / J - 1) :
+                                        K / gamma * (std::pow(J, -gamma) - 1);
             BOOST_TEST(relative_difference(model.pressure(J), p_expected) <
                        1e-12);
 
@@ -557,28 +553,29 @@ BOOST_AUTO_TEST_CASE(equation_of_state_and_energy)
             point.dt = 1e-3;
             SymmetricTensor<2, 3> stress;
             model.update_stress(point, stress, ArrayView<double>());
-            BOOST_TEST(relative_difference(
-                         stress,
-                         -p_expected * dealii::unit_symmetric_tensor<3>()) <
-                       1e-12);
+            BOOST_TEST(
+              relative_difference(stress,
+                                  -p_expected *
+                                    dealii::unit_symmetric_tensor<3>()) <
+              1e-12);
 
             // p = -dpsi/dJ.
-            const double h     = 1e-6;
-            const double dpsi  = (psi(J + h) - psi(J - h)) / (2 * h);
+            const double h    = 1e-6;
+            const double dpsi = (psi(J + h) - psi(J - h)) / (2 * h);
             BOOST_TEST(relative_difference(-dpsi, p_expected) < 1e-6);
 
             // Sound speed sqrt(dp/drho), rho = rho0/J.
             const double c2 =
               eos == "linear" ? K / rho0 : K / rho0 * std::pow(J, 1 - gamma);
-            BOOST_TEST(relative_difference(model.wave_speed(F),
-                                           std::sqrt(c2)) < 1e-12);
+            BOOST_TEST(relative_difference(model.wave_speed(F), std::sqrt(c2)) <
+                       1e-12);
           }
       }
     }
 
   // Viscous part: 2 mu dev(sym L), J = 1.
-  const auto model =
-    make_model<NewtonianFluid>({{"Viscosity", "1e-3"}, {"Bulk modulus", "2.2e9"}});
+  const auto model = make_model<NewtonianFluid>(
+    {{"Viscosity", "1e-3"}, {"Bulk modulus", "2.2e9"}});
   PointKinematics point;
   point.F  = identity();
   point.dt = 1e-3;
@@ -587,18 +584,17 @@ BOOST_AUTO_TEST_CASE(equation_of_state_and_energy)
       point.velocity_gradient[i][j] = std::cos(1.0 + 2 * i + j);
   SymmetricTensor<2, 3> stress;
   model.update_stress(point, stress, ArrayView<double>());
-  BOOST_TEST(
-    relative_difference(stress,
-                        2 * mu *
-                          dealii::deviator(
-                            dealii::symmetrize(point.velocity_gradient))) <
-    1e-12);
+  BOOST_TEST(relative_difference(stress,
+                                 2 * mu *
+                                   dealii::deviator(dealii::symmetrize(
+                                     point.velocity_gradient))) < 1e-12);
 }
 
 BOOST_AUTO_TEST_CASE(tait_with_unit_exponent_is_linear)
 {
-  const auto linear = make_model<NewtonianFluid>({{"Equation of state", "linear"}});
-  const auto tait   = make_model<NewtonianFluid>(
+  const auto linear =
+    make_model<NewtonianFluid>({{"Equation of state", "linear"}});
+  const auto tait = make_model<NewtonianFluid>(
     {{"Equation of state", "Tait"}, {"Tait exponent", "1"}});
   for (const double J : {0.7, 1.0, 1.4})
     {
@@ -622,13 +618,13 @@ BOOST_AUTO_TEST_SUITE(plasticity)
 
 BOOST_AUTO_TEST_CASE(radial_return_consistency)
 {
-  Parameters p            = steel;
-  p["Yield stress"]       = "250e6";
-  p["Hardening modulus"]  = "2e9";
-  const auto   model      = make_model<VonMisesPlasticity>(p);
-  const double mu         = model.elastic_constants().mu();
-  const double H          = 2e9;
-  const double sigma_y    = 250e6;
+  Parameters p           = steel;
+  p["Yield stress"]      = "250e6";
+  p["Hardening modulus"] = "2e9";
+  const auto   model     = make_model<VonMisesPlasticity>(p);
+  const double mu        = model.elastic_constants().mu();
+  const double H         = 2e9;
+  const double sigma_y   = 250e6;
 
   Tensor<2, 3> L;
   L[0][0] = 1;
@@ -636,7 +632,7 @@ BOOST_AUTO_TEST_CASE(radial_return_consistency)
   L[2][2] = 0.1;
   L[0][1] = L[1][0] = 0.5;
   L[1][2] = L[2][1] = -0.2;
-  const double dt = 2e-3; // beyond yield in one step
+  const double dt   = 2e-3; // beyond yield in one step
 
   // One plastic step from the natural state.
   SymmetricTensor<2, 3> stress;
@@ -647,9 +643,10 @@ BOOST_AUTO_TEST_CASE(radial_return_consistency)
   point.F                 = identity() + dt * L;
   model.update_stress(point, stress, ArrayView<double>(history.data(), 1));
 
-  const SymmetricTensor<2, 3> trial = elasticity::stress_increment(
-    model.elastic_constants(), dt * dealii::symmetrize(L),
-    KinematicAssumption::three_dimensional);
+  const SymmetricTensor<2, 3> trial =
+    elasticity::stress_increment(model.elastic_constants(),
+                                 dt * dealii::symmetrize(L),
+                                 KinematicAssumption::three_dimensional);
   const double f_trial = model.yield_function(trial, 0.0);
   BOOST_TEST(f_trial > 0);
   const double d_gamma = f_trial / (2 * mu + 2. / 3. * H);
@@ -686,7 +683,7 @@ BOOST_AUTO_TEST_CASE(radial_return_consistency)
     }
 
   // Elastic unloading leaves alpha alone.
-  const double alpha = history[0];
+  const double alpha      = history[0];
   point.velocity_gradient = -1 * L;
   point.dt                = 1e-5;
   model.update_stress(point, stress, ArrayView<double>(history.data(), 1));
@@ -721,8 +718,8 @@ BOOST_AUTO_TEST_CASE(uniaxial_strain_curve)
   const double tangent = K + 4. / 3. * mu * H / (3 * mu + H);
 
   Tensor<2, 3> L;
-  L[0][0] = 1;
-  const double        d_eps = 1e-5;
+  L[0][0]                     = 1;
+  const double          d_eps = 1e-5;
   SymmetricTensor<2, 3> stress;
   std::vector<double>   history = {0.0};
   PointKinematics       point;
@@ -734,7 +731,7 @@ BOOST_AUTO_TEST_CASE(uniaxial_strain_curve)
   unsigned int n_plastic  = 0;
   for (unsigned int n = 1; n <= 600; ++n)
     {
-      eps          = n * d_eps;
+      eps           = n * d_eps;
       point.F[0][0] = 1 + eps;
       model.update_stress(point, stress, ArrayView<double>(history.data(), 1));
       BOOST_TEST(relative_difference(stress[0][0], sigma_xx_exact(eps)) <
@@ -775,8 +772,7 @@ BOOST_AUTO_TEST_CASE(registered_models)
   BOOST_TEST(subsection_name("linear elastic") == "Linear elastic");
   BOOST_TEST(subsection_name("neo-Hookean") == "Neo-Hookean");
   BOOST_TEST(subsection_name("Newtonian fluid") == "Newtonian fluid");
-  BOOST_TEST(subsection_name("von Mises plasticity") ==
-             "Von Mises plasticity");
+  BOOST_TEST(subsection_name("von Mises plasticity") == "Von Mises plasticity");
   BOOST_TEST(to_string(KinematicAssumption::plane_stress) == "plane stress");
 }
 
@@ -897,7 +893,10 @@ BOOST_AUTO_TEST_CASE(input_errors)
     {{"Newtonian fluid", "Newtonian fluid", "Bulk modulus", "0"}},
     {{"Newtonian fluid", "Newtonian fluid", "Tait exponent", "0.5"}},
     {{"von Mises plasticity", "Von Mises plasticity", "Yield stress", "0"}},
-    {{"von Mises plasticity", "Von Mises plasticity", "Hardening modulus", "-1"}},
+    {{"von Mises plasticity",
+      "Von Mises plasticity",
+      "Hardening modulus",
+      "-1"}},
     {{"neo-Hookean", "Neo-Hookean", "Young's modulus", "0"}}};
   for (const auto &b : bad)
     {

@@ -6,23 +6,22 @@
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK
 #endif
-#include <boost/test/unit_test.hpp>
-
 #include <mpm/shape_functions/q1_cell.h>
 
 #include <random>
 
+#include <boost/test/unit_test.hpp>
+
 using namespace dealii;
 using mpm::shape_functions::Q1Cell;
 
-namespace
-{
+namespace {
   template <int dim>
   Q1Cell<dim>
   make_cell(const bool distorted, const unsigned int seed)
   {
-    std::mt19937                           gen(seed);
-    std::uniform_real_distribution<double> u(-0.2, 0.2);
+    std::mt19937                                    gen(seed);
+    std::uniform_real_distribution<double>          u(-0.2, 0.2);
     std::array<Point<dim>, Q1Cell<dim>::n_vertices> v;
     for (unsigned int i = 0; i < Q1Cell<dim>::n_vertices; ++i)
       for (unsigned int d = 0; d < dim; ++d)
@@ -80,13 +79,14 @@ namespace
             const double   eps = 1e-6;
             const auto     J   = cell.jacobian(xi);
             Tensor<1, dim> e;
-            e[d] = eps;
+            e[d]                     = eps;
             const Tensor<1, dim> dxi = invert(J) * e;
-            double Np[nv], Nm[nv];
+            double               Np[nv], Nm[nv];
             Q1Cell<dim>::values(xi + dxi, Np);
             Q1Cell<dim>::values(xi - dxi, Nm);
             for (unsigned int v = 0; v < nv; ++v)
-              BOOST_TEST(std::abs((Np[v] - Nm[v]) / (2 * eps) - G[v][d]) < 1e-6);
+              BOOST_TEST(std::abs((Np[v] - Nm[v]) / (2 * eps) - G[v][d]) <
+                         1e-6);
           }
       }
   }
@@ -119,9 +119,11 @@ BOOST_AUTO_TEST_CASE(distorted_cells)
 
 BOOST_AUTO_TEST_CASE(parallelogram)
 {
-  std::array<Point<2>, 4> v = {Point<2>(0, 0), Point<2>(1, 0.2),
-                               Point<2>(0.5, 1), Point<2>(1.5, 1.2)};
-  Q1Cell<2> c;
+  std::array<Point<2>, 4> v = {Point<2>(0, 0),
+                               Point<2>(1, 0.2),
+                               Point<2>(0.5, 1),
+                               Point<2>(1.5, 1.2)};
+  Q1Cell<2>               c;
   c.reinit(v, 1e-12);
   BOOST_TEST(!c.is_box);
   check_cell(c);

@@ -8,10 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace mpm
-{
-  namespace benchmarks
-  {
+namespace mpm {
+  namespace benchmarks {
     /**
      * A benchmark with an exact solution adds error columns to the
      * statistics file. Its parameters come from the parameter file's
@@ -30,15 +28,15 @@ namespace mpm
       /// Collective: the error measures at @p time.
       virtual std::vector<double>
       measure(dealii::Particles::ParticleHandler<dim> &particles,
-              const double                            time,
-              const MPI_Comm                          comm) const = 0;
+              const double                             time,
+              const MPI_Comm                           comm) const = 0;
     };
 
     /// Create a benchmark by name ("none" gives nullptr); InputError lists
     /// the known names or a missing constant.
     template <int dim>
     std::unique_ptr<Benchmark<dim>>
-    create_benchmark(const std::string &                  name,
+    create_benchmark(const std::string                   &name,
                      const std::map<std::string, double> &constants);
   } // namespace benchmarks
 } // namespace mpm

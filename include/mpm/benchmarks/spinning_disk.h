@@ -2,10 +2,8 @@
 
 #include <mpm/benchmarks/benchmark.h>
 
-namespace mpm
-{
-  namespace benchmarks
-  {
+namespace mpm {
+  namespace benchmarks {
     /**
      * BENCHMARKS.md section 3: a plane-stress disk of radius a spinning at
      * omega about the origin in its steady state. Columns: mass-weighted
@@ -17,7 +15,9 @@ namespace mpm
     class SpinningDisk : public Benchmark<dim>
     {
     public:
-      SpinningDisk(const double a, const double omega, const double nu,
+      SpinningDisk(const double a,
+                   const double omega,
+                   const double nu,
                    const double rho);
 
       std::vector<std::string>
@@ -25,8 +25,8 @@ namespace mpm
 
       std::vector<double>
       measure(dealii::Particles::ParticleHandler<dim> &particles,
-              const double                            time,
-              const MPI_Comm                          comm) const override;
+              const double                             time,
+              const MPI_Comm                           comm) const override;
 
     private:
       double a, omega, nu, rho, sigma0;

@@ -14,8 +14,7 @@
 #include <memory>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   using NodalVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
   /**
@@ -76,8 +75,8 @@ namespace mpm
 
     /// Node-local indices of a cell's vertices (deal.II vertex order).
     const unsigned int *
-    nodes(const typename dealii::Triangulation<dim>::active_cell_iterator
-            &cell) const
+    nodes(const typename dealii::Triangulation<dim>::active_cell_iterator &cell)
+      const
     {
       return &cell_nodes[cell->active_cell_index() * n_vertices];
     }
@@ -163,8 +162,8 @@ namespace mpm
     locate_in_owned_cells(
       const std::vector<dealii::Point<dim>> &points,
       std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
-        &                               cells,
-      std::vector<dealii::Point<dim>> & reference_points) const;
+                                      &cells,
+      std::vector<dealii::Point<dim>> &reference_points) const;
 
     /// Bounding box of the owned cells of this rank (empty: lower > upper).
     std::pair<dealii::Point<dim>, dealii::Point<dim>>
@@ -180,23 +179,23 @@ namespace mpm
   private:
     struct NodeConstraint
     {
-      unsigned int                               n_normals = 0;
-      std::array<dealii::Tensor<1, dim>, dim>    normals;
+      unsigned int                            n_normals = 0;
+      std::array<dealii::Tensor<1, dim>, dim> normals;
     };
 
-    MPI_Comm                                        comm;
-    std::unique_ptr<dealii::Triangulation<dim>>     tria;
-    std::unique_ptr<dealii::Mapping<dim>>           mapping_ptr;
-    dealii::FE_Q<dim>                               fe;
-    dealii::DoFHandler<dim>                         dofs;
+    MPI_Comm                                                   comm;
+    std::unique_ptr<dealii::Triangulation<dim>>                tria;
+    std::unique_ptr<dealii::Mapping<dim>>                      mapping_ptr;
+    dealii::FE_Q<dim>                                          fe;
+    dealii::DoFHandler<dim>                                    dofs;
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
-    std::vector<shape_functions::Q1Cell<dim>>       cell_geometry;
-    std::vector<unsigned int>                       cell_nodes;
-    std::vector<double>                             cell_heights;
-    std::vector<dealii::Point<dim>>                 node_positions;
-    std::vector<unsigned int>                       constraint_of_node;
-    std::vector<NodeConstraint>                     constraints;
-    unsigned int                                    n_owned = 0, n_ghost = 0;
-    bool                                            cartesian = false;
+    std::vector<shape_functions::Q1Cell<dim>>                  cell_geometry;
+    std::vector<unsigned int>                                  cell_nodes;
+    std::vector<double>                                        cell_heights;
+    std::vector<dealii::Point<dim>>                            node_positions;
+    std::vector<unsigned int>   constraint_of_node;
+    std::vector<NodeConstraint> constraints;
+    unsigned int                n_owned = 0, n_ghost = 0;
+    bool                        cartesian = false;
   };
 } // namespace mpm

@@ -5,8 +5,7 @@
 
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   /**
    * A box with the given cells per direction, built as the coarsest
    * subdivided box that global refinement turns into it: 384 x 384 becomes
@@ -17,8 +16,8 @@ namespace mpm
    */
   template <int dim>
   void
-  create_box_mesh(dealii::Triangulation<dim> &     tria,
+  create_box_mesh(dealii::Triangulation<dim>      &tria,
                   const std::vector<unsigned int> &cells_per_direction,
-                  const dealii::Point<dim> &       lower,
-                  const dealii::Point<dim> &       upper);
+                  const dealii::Point<dim>        &lower,
+                  const dealii::Point<dim>        &upper);
 } // namespace mpm

@@ -4,8 +4,7 @@
 
 #include <string>
 
-namespace mpm
-{
+namespace mpm {
   /// Components per node of the kinematics vector: velocity at the end of
   /// the step, and its increment over the step (for FLIP).
   template <int dim>
@@ -28,11 +27,11 @@ namespace mpm
   template <int dim>
   std::string
   update_grid(const BackgroundGrid<dim> &grid,
-              const NodalVector &        p2g,
+              const NodalVector         &p2g,
               const double               dt,
               const double               damping,
               const double               min_mass,
-              NodalVector &              kinematics);
+              NodalVector               &kinematics);
 
   /**
    * Nodal velocity v_i = (mv)_i / m_i (constrained) from a mass vector
@@ -43,10 +42,10 @@ namespace mpm
   template <int dim>
   std::string
   nodal_velocity(const BackgroundGrid<dim> &grid,
-                 const NodalVector &        p2g,
-                 const NodalVector &        momentum,
+                 const NodalVector         &p2g,
+                 const NodalVector         &momentum,
                  const unsigned int         momentum_components,
                  const unsigned int         momentum_offset,
                  const double               min_mass,
-                 NodalVector &              kinematics);
+                 NodalVector               &kinematics);
 } // namespace mpm

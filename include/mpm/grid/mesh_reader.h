@@ -4,8 +4,7 @@
 
 #include <string>
 
-namespace mpm
-{
+namespace mpm {
   /**
    * Read a Gmsh (.msh) or UCD (.inp, .ucd) mesh into @p tria. A relative
    * @p file_name is looked up next to the parameter file (@p input_folder)
@@ -16,7 +15,7 @@ namespace mpm
   template <int dim>
   void
   read_mesh(dealii::Triangulation<dim> &tria,
-            const std::string &         file_name,
-            const std::string &         input_folder,
-            const std::string &         entry);
+            const std::string          &file_name,
+            const std::string          &input_folder,
+            const std::string          &entry);
 } // namespace mpm

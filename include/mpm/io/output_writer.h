@@ -9,8 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   /**
    * Writes what ParaView and scripts read: particles-NNNNN.pvtu and
    * grid-NNNNN.pvtu with particles.pvd / grid.pvd time series, and the
@@ -23,23 +22,23 @@ namespace mpm
   {
   public:
     OutputWriter(const MPI_Comm                  comm,
-                 const std::string &             directory,
-                 const ParticleLayout<dim> &     layout,
+                 const std::string              &directory,
+                 const ParticleLayout<dim>      &layout,
                  const std::vector<std::string> &history_names);
 
     void
     write_particles_vtu(dealii::Particles::ParticleHandler<dim> &particles,
-                        const double                            time);
+                        const double                             time);
 
     void
     write_grid_vtu(const BackgroundGrid<dim> &grid,
-                   const NodalVector &        p2g,
-                   const NodalVector &        kinematics,
+                   const NodalVector         &p2g,
+                   const NodalVector         &kinematics,
                    const double               time);
 
     void
     write_particles_csv(dealii::Particles::ParticleHandler<dim> &particles,
-                        const double                            time);
+                        const double                             time);
 
     /// Number of outputs written so far (the NNNNN of the file names).
     unsigned int
@@ -54,11 +53,11 @@ namespace mpm
     }
 
   private:
-    MPI_Comm                                  comm;
-    std::string                               directory;
-    ParticleLayout<dim>                       layout;
-    std::vector<std::string>                  history_names;
-    unsigned int                              n_outputs = 0;
+    MPI_Comm                                    comm;
+    std::string                                 directory;
+    ParticleLayout<dim>                         layout;
+    std::vector<std::string>                    history_names;
+    unsigned int                                n_outputs = 0;
     std::vector<std::pair<double, std::string>> particle_records, grid_records;
   };
 

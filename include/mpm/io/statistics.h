@@ -8,25 +8,24 @@
 #include <string>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   /// Global sums over all particles, for the statistics file and tests.
   template <int dim>
   struct GlobalStatistics
   {
-    unsigned long long n_particles    = 0;
-    double             mass           = 0;
-    double             kinetic_energy = 0;
-    double             strain_energy  = 0;
-    double             momentum[dim]  = {};
+    unsigned long long n_particles         = 0;
+    double             mass                = 0;
+    double             kinetic_energy      = 0;
+    double             strain_energy       = 0;
+    double             momentum[dim]       = {};
     double             angular_momentum[3] = {}; // about the origin
-    double             removed_mass   = 0;
+    double             removed_mass        = 0;
 
     /// Compute on every rank (collective).
     void
     compute(dealii::Particles::ParticleHandler<dim> &particles,
-            const std::vector<Body<dim>> &          bodies,
-            const MPI_Comm                          comm);
+            const std::vector<Body<dim>>            &bodies,
+            const MPI_Comm                           comm);
   };
 
   /**
@@ -40,15 +39,15 @@ namespace mpm
   {
   public:
     void
-    open(const std::string &file_name,
+    open(const std::string              &file_name,
          const std::vector<std::string> &extra_columns);
 
     void
-    write_row(const double                     time,
-              const unsigned int               step,
-              const double                     dt,
-              const GlobalStatistics<dim> &    s,
-              const std::vector<double> &      extra);
+    write_row(const double                 time,
+              const unsigned int           step,
+              const double                 dt,
+              const GlobalStatistics<dim> &s,
+              const std::vector<double>   &extra);
 
     static std::vector<std::string>
     column_names(const std::vector<std::string> &extra_columns);

@@ -1,22 +1,19 @@
 #pragma once
 
-#include <mpm/materials/material.h>
-
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-namespace mpm
-{
-  namespace materials
-  {
+#include <mpm/materials/material.h>
+
+namespace mpm {
+  namespace materials {
     /**
      * Building blocks shared by the isotropic (hypo)elastic models: elastic
      * constants, the elastic law for every kinematic assumption, the
      * complementary energy and the Hughes-Winget objective update.
      */
-    namespace elasticity
-    {
+    namespace elasticity {
       /// Isotropic elastic constants, stored as Young's modulus and
       /// Poisson's ratio (the parameters the user gives).
       struct IsotropicConstants

@@ -10,8 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   /**
    * How a model of dimension 1 or 2 is embedded in three-dimensional
    * continuum mechanics. Materials always see 3x3 tensors; this tells them
@@ -29,8 +28,7 @@ namespace mpm
   std::string
   to_string(const KinematicAssumption k);
 
-  namespace materials
-  {
+  namespace materials {
     using dealii::ArrayView;
     using dealii::SymmetricTensor;
     using dealii::Tensor;
@@ -86,14 +84,14 @@ namespace mpm
 
       /// Advance the Cauchy stress over one step.
       virtual void
-      update_stress(const PointKinematics &  kinematics,
-                    SymmetricTensor<2, 3> &  stress,
+      update_stress(const PointKinematics   &kinematics,
+                    SymmetricTensor<2, 3>   &stress,
                     const ArrayView<double> &history) const = 0;
 
       /// Stored strain energy per unit reference volume.
       virtual double
-      strain_energy_density(const SymmetricTensor<2, 3> &   stress,
-                            const Tensor<2, 3> &            F,
+      strain_energy_density(const SymmetricTensor<2, 3>   &stress,
+                            const Tensor<2, 3>            &F,
                             const ArrayView<const double> &history) const = 0;
 
       /// Largest wave speed of the current state (for the CFL condition).
@@ -133,10 +131,10 @@ namespace mpm
      */
     struct MaterialEntry
     {
-      std::string                                      name;
-      std::string                                      description;
-      std::function<void(dealii::ParameterHandler &)>  declare_parameters;
-      std::function<std::unique_ptr<Material>()>       create;
+      std::string                                     name;
+      std::string                                     description;
+      std::function<void(dealii::ParameterHandler &)> declare_parameters;
+      std::function<std::unique_ptr<Material>()>      create;
     };
 
     /// Add a model to the registry (called at static initialisation).
@@ -162,7 +160,7 @@ namespace mpm
     std::unique_ptr<Material>
     create_material(dealii::ParameterHandler &prm,
                     const KinematicAssumption k,
-                    const std::string &       where);
+                    const std::string        &where);
 
     /// The section name used for a model in the parameter file.
     std::string
@@ -170,9 +168,8 @@ namespace mpm
   } // namespace materials
 } // namespace mpm
 
-#define MPM_REGISTER_MATERIAL(classname, model_name, model_description)     \
-  namespace                                                                \
-  {                                                                        \
+#define MPM_REGISTER_MATERIAL(classname, model_name, model_description)    \
+  namespace {                                                              \
     const bool registered_##classname = mpm::materials::register_material( \
       {model_name,                                                         \
        model_description,                                                  \

@@ -15,10 +15,8 @@
  * entries (with documentation and defaults) and reads them back; the
  * user guide in doc/parameters.md follows the same order.
  */
-namespace mpm
-{
-  namespace Parameters
-  {
+namespace mpm {
+  namespace Parameters {
     /// Background grid: a subdivided box or a mesh file.
     template <int dim>
     struct Grid
@@ -54,14 +52,14 @@ namespace mpm
         fixed,
         cfl
       };
-      Scheme      scheme        = Scheme::musl;
-      StepControl step_control  = StepControl::cfl;
-      double      end_time      = 1.0;
-      double      time_step     = 1e-3;
-      double      cfl_number    = 0.5;
-      double      flip_fraction = 1.0;
-      double      damping       = 0.0;
-      unsigned int max_steps    = 0;
+      Scheme       scheme        = Scheme::musl;
+      StepControl  step_control  = StepControl::cfl;
+      double       end_time      = 1.0;
+      double       time_step     = 1e-3;
+      double       cfl_number    = 0.5;
+      double       flip_fraction = 1.0;
+      double       damping       = 0.0;
+      unsigned int max_steps     = 0;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -73,7 +71,7 @@ namespace mpm
     struct BoundaryConditions
     {
       std::vector<dealii::types::boundary_id> fixed, slip;
-      bool remove_lost_particles = false;
+      bool                                    remove_lost_particles = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -100,10 +98,10 @@ namespace mpm
       std::string               mesh_file;
       unsigned int              particles_per_direction = 2;
 
-      std::string initial_velocity;      // muparser, dim components
-      std::string initial_stress;        // muparser, Voigt components
-      std::string body_force;            // muparser of x, X and t
-      std::string traction;              // muparser of x, X and t
+      std::string initial_velocity; // muparser, dim components
+      std::string initial_stress;   // muparser, Voigt components
+      std::string body_force;       // muparser of x, X and t
+      std::string traction;         // muparser of x, X and t
       std::vector<dealii::types::boundary_id> traction_boundary_ids;
 
       static void
@@ -115,13 +113,13 @@ namespace mpm
     /// Where and how often results are written.
     struct Output
     {
-      std::string  directory       = "output";
-      double       interval        = 0.1;
-      bool         write_vtu       = true;
-      bool         write_csv       = true;
-      bool         write_grid      = true;
-      std::string  test_summary;
-      double       progress_interval = 10.0;
+      std::string directory  = "output";
+      double      interval   = 0.1;
+      bool        write_vtu  = true;
+      bool        write_csv  = true;
+      bool        write_grid = true;
+      std::string test_summary;
+      double      progress_interval = 10.0;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -133,15 +131,15 @@ namespace mpm
     template <int dim>
     struct AllParameters
     {
-      std::string             file_name;
-      unsigned int            n_bodies = 1;
-      KinematicAssumption     kinematics = KinematicAssumption::plane_strain;
-      Grid<dim>               grid;
-      TimeStepping            time;
-      BoundaryConditions      boundary;
-      std::vector<Body<dim>>  bodies;
-      Output                  output;
-      std::string             benchmark = "none";
+      std::string            file_name;
+      unsigned int           n_bodies   = 1;
+      KinematicAssumption    kinematics = KinematicAssumption::plane_strain;
+      Grid<dim>              grid;
+      TimeStepping           time;
+      BoundaryConditions     boundary;
+      std::vector<Body<dim>> bodies;
+      Output                 output;
+      std::string            benchmark = "none";
       std::map<std::string, double> constants;
 
       static void

@@ -12,8 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   /**
    * A body at run time: its material and the expressions for its initial
    * state and loads. Loads are functions of the current position x, the
@@ -33,9 +32,9 @@ namespace mpm
     /// Evaluate b(x, X, t) per unit mass.
     void
     body_force_at(const dealii::Point<dim> &x,
-                  const double *            X,
+                  const double             *X,
                   const double              t,
-                  double *                  out) const
+                  double                   *out) const
     {
       if (body_force.is_constant())
         return body_force.value({}, t, out);
@@ -51,9 +50,9 @@ namespace mpm
     /// Evaluate the traction t(x, X, t).
     void
     traction_at(const dealii::Point<dim> &x,
-                const double *            X,
+                const double             *X,
                 const double              t,
-                double *                  out) const
+                double                   *out) const
     {
       if (traction.is_constant())
         return traction.value({}, t, out);
@@ -84,18 +83,18 @@ namespace mpm
   struct ParticleSeed
   {
     dealii::Point<dim>     position;
-    double                 volume        = 0;
-    dealii::Tensor<2, dim> domain;        // column i = half-vector r_i
+    double                 volume = 0;
+    dealii::Tensor<2, dim> domain; // column i = half-vector r_i
     double                 traction_area = 0;
   };
 
   /// Build the body mesh (box, ball or file) on every rank.
   template <int dim>
   void
-  create_body_mesh(dealii::Triangulation<dim> &     body_mesh,
-                   const Parameters::Body<dim> &    prm,
-                   const std::string &              input_folder,
-                   const std::string &              where);
+  create_body_mesh(dealii::Triangulation<dim>  &body_mesh,
+                   const Parameters::Body<dim> &prm,
+                   const std::string           &input_folder,
+                   const std::string           &where);
 
   /**
    * Split body cells into n^dim sub-cells (in the cell's reference
@@ -105,11 +104,11 @@ namespace mpm
    */
   template <int dim>
   void
-  split_body_cells(const dealii::Triangulation<dim> &       body_mesh,
-                   const unsigned int                       n,
+  split_body_cells(const dealii::Triangulation<dim>              &body_mesh,
+                   const unsigned int                             n,
                    const std::vector<dealii::types::boundary_id> &traction_ids,
-                   const unsigned int                       first_cell,
-                   const unsigned int                       end_cell,
-                   std::vector<ParticleSeed<dim>> &         seeds,
-                   std::vector<unsigned long long> &        seed_ids);
+                   const unsigned int                             first_cell,
+                   const unsigned int                             end_cell,
+                   std::vector<ParticleSeed<dim>>                &seeds,
+                   std::vector<unsigned long long>               &seed_ids);
 } // namespace mpm

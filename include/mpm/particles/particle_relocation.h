@@ -4,8 +4,7 @@
 
 #include <mpm/grid/background_grid.h>
 
-namespace mpm
-{
+namespace mpm {
   /**
    * Keeps particles sorted into cells after their positions changed,
    * without deal.II's global re-sort: each particle's reference coordinates
@@ -16,12 +15,13 @@ namespace mpm
    *
    * Returns false, on every rank, if some particle could not be placed this
    * way (it left the grid, or moved further than the ghost layer); the
-   * caller then runs ParticleHandler::sort_particles_into_subdomains_and_cells(),
-   * which also reports lost particles.
+   * caller then runs
+   * ParticleHandler::sort_particles_into_subdomains_and_cells(), which also
+   * reports lost particles.
    */
   template <int dim>
   bool
-  relocate_particles(const BackgroundGrid<dim> &              grid,
+  relocate_particles(const BackgroundGrid<dim>               &grid,
                      dealii::Particles::ParticleHandler<dim> &particles,
-                     const MPI_Comm                          comm);
+                     const MPI_Comm                           comm);
 } // namespace mpm

@@ -7,10 +7,8 @@
 #include <cmath>
 #include <limits>
 
-namespace mpm
-{
-  namespace shape_functions
-  {
+namespace mpm {
+  namespace shape_functions {
     using dealii::Point;
     using dealii::Tensor;
 
@@ -105,8 +103,8 @@ namespace mpm
       /// Values and physical gradients at xi.
       void
       values_and_gradients(const Point<dim> &xi,
-                           double *          N,
-                           Tensor<1, dim> *  grad) const
+                           double           *N,
+                           Tensor<1, dim>   *grad) const
       {
         values(xi, N);
         reference_gradients(xi, grad);

@@ -18,8 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   /**
    * The explicit MPM solver. setup() builds everything from the parameters
    * and checks it (every problem is an InputError, raised before anything
@@ -35,7 +34,7 @@ namespace mpm
   {
   public:
     Simulator(const Parameters::AllParameters<dim> &parameters,
-              dealii::ParameterHandler &            prm,
+              dealii::ParameterHandler             &prm,
               const MPI_Comm                        comm);
 
     /// Build grid, bodies and particles; check stability. Collective.
@@ -109,10 +108,10 @@ namespace mpm
     void
     create_particles();
     void
-    initial_properties(const Body<dim> &         body,
+    initial_properties(const Body<dim>         &body,
                        const ParticleSeed<dim> &seed,
-                       const double              rho,
-                       std::vector<double> &     properties) const;
+                       const double             rho,
+                       std::vector<double>     &properties) const;
 
     // Output pieces.
     void
@@ -129,17 +128,17 @@ namespace mpm
     check_errors();
 
     const Parameters::AllParameters<dim> &params;
-    dealii::ParameterHandler &            prm;
+    dealii::ParameterHandler             &prm;
     MPI_Comm                              comm;
     dealii::ConditionalOStream            pcout;
     dealii::TimerOutput                   timer;
     std::string                           input_folder;
 
-    BackgroundGrid<dim>                     background;
-    dealii::Particles::ParticleHandler<dim> particle_handler;
-    ParticleLayout<dim>                     layout;
-    std::vector<Body<dim>>                  bodies;
-    std::vector<std::string>                history_names;
+    BackgroundGrid<dim>                         background;
+    dealii::Particles::ParticleHandler<dim>     particle_handler;
+    ParticleLayout<dim>                         layout;
+    std::vector<Body<dim>>                      bodies;
+    std::vector<std::string>                    history_names;
     std::unique_ptr<benchmarks::Benchmark<dim>> benchmark;
 
     NodalVector p2g, kinematics, remap;

@@ -8,8 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   /// What the stress update learns about the state on the way.
   struct StressUpdateResult
   {
@@ -27,16 +26,16 @@ namespace mpm
    */
   template <int dim>
   StressUpdateResult
-  update_stress(const BackgroundGrid<dim> &              grid,
+  update_stress(const BackgroundGrid<dim>               &grid,
                 dealii::Particles::ParticleHandler<dim> &particles,
-                const std::vector<Body<dim>> &          bodies,
-                const NodalVector &                     kinematics,
-                const double                            dt);
+                const std::vector<Body<dim>>            &bodies,
+                const NodalVector                       &kinematics,
+                const double                             dt);
 
   /// The stability limit of the current state (no update).
   template <int dim>
   double
-  stable_time_step(const BackgroundGrid<dim> &              grid,
+  stable_time_step(const BackgroundGrid<dim>               &grid,
                    dealii::Particles::ParticleHandler<dim> &particles,
-                   const std::vector<Body<dim>> &          bodies);
+                   const std::vector<Body<dim>>            &bodies);
 } // namespace mpm

@@ -6,10 +6,8 @@
 
 #include <string>
 
-namespace mpm
-{
-  namespace transfer
-  {
+namespace mpm {
+  namespace transfer {
     /**
      * Grid to particle: with v_i the nodal velocity at the end of the step
      * and dv_i its increment (KinematicsLayout),
@@ -21,10 +19,10 @@ namespace mpm
      */
     template <int dim>
     std::string
-    grid_to_particle(const BackgroundGrid<dim> &              grid,
+    grid_to_particle(const BackgroundGrid<dim>               &grid,
                      dealii::Particles::ParticleHandler<dim> &particles,
-                     const NodalVector &                     kinematics,
-                     const double                            dt,
-                     const double                            flip_fraction);
+                     const NodalVector                       &kinematics,
+                     const double                             dt,
+                     const double                             flip_fraction);
   } // namespace transfer
 } // namespace mpm

@@ -7,10 +7,8 @@
 
 #include <vector>
 
-namespace mpm
-{
-  namespace transfer
-  {
+namespace mpm {
+  namespace transfer {
     /// What a particle-to-grid pass accumulates.
     enum class P2GContent
     {
@@ -40,11 +38,11 @@ namespace mpm
      */
     template <int dim>
     void
-    particle_to_grid(const BackgroundGrid<dim> &             grid,
+    particle_to_grid(const BackgroundGrid<dim>               &grid,
                      dealii::Particles::ParticleHandler<dim> &particles,
-                     const std::vector<Body<dim>> &          bodies,
-                     const double                            time,
-                     const P2GContent                        content,
-                     NodalVector &                           nodal);
+                     const std::vector<Body<dim>>            &bodies,
+                     const double                             time,
+                     const P2GContent                         content,
+                     NodalVector                             &nodal);
   } // namespace transfer
 } // namespace mpm

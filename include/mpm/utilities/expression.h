@@ -8,15 +8,14 @@
 #include <string>
 #include <vector>
 
-namespace mpm
-{
+namespace mpm {
   /**
    * A vector-valued muparser expression (muparser used directly: deal.II's
-   * FunctionParser exists only for 1 to 3 variables, loads need 2*dim+1) of n_vars spatial variables and,
-   * optionally, time. Expressions that use no variable are recognised and
-   * evaluated once, so constant loads cost nothing in the time loop.
-   * Syntax errors are reported at construction as InputError naming the
-   * parameter.
+   * FunctionParser exists only for 1 to 3 variables, loads need 2*dim+1) of
+   * n_vars spatial variables and, optionally, time. Expressions that use no
+   * variable are recognised and evaluated once, so constant loads cost nothing
+   * in the time loop. Syntax errors are reported at construction as InputError
+   * naming the parameter.
    */
   template <int n_vars>
   class Expression
@@ -24,12 +23,12 @@ namespace mpm
   public:
     Expression() = default;
 
-    Expression(const std::string &                  text,
+    Expression(const std::string                   &text,
                const unsigned int                   n_components,
-               const std::string &                  variables,
+               const std::string                   &variables,
                const std::map<std::string, double> &constants,
                const bool                           time_dependent,
-               const std::string &                  where);
+               const std::string                   &where);
 
     bool
     is_constant() const
