@@ -1,5 +1,6 @@
 #include <mpm/materials/elasticity.h>
 #include <mpm/utilities/input_error.h>
+#include <mpm/utilities/numbers.h>
 
 #include <cmath>
 #include <sstream>
@@ -58,11 +59,11 @@ namespace mpm {
         // produces the same kind of message.
         prm.declare_entry("Young's modulus",
                           "1e6",
-                          dealii::Patterns::Double(),
+                          mpm::NumberOrConstant(),
                           "Young's modulus E [Pa]. Must be positive.");
         prm.declare_entry("Poisson's ratio",
                           "0.3",
-                          dealii::Patterns::Double(),
+                          mpm::NumberOrConstant(),
                           "Poisson's ratio nu [-], in [0, 0.5).");
       }
 
@@ -72,8 +73,8 @@ namespace mpm {
       parse_parameters(dealii::ParameterHandler &prm)
       {
         IsotropicConstants c;
-        c.youngs_modulus = prm.get_double("Young's modulus");
-        c.poissons_ratio = prm.get_double("Poisson's ratio");
+        c.youngs_modulus = mpm::get_number(prm, "Young's modulus");
+        c.poissons_ratio = mpm::get_number(prm, "Poisson's ratio");
         if (!(c.youngs_modulus > 0) || !std::isfinite(c.youngs_modulus))
           throw InputError("Young's modulus = " + prm.get("Young's modulus") +
                            " must be positive");

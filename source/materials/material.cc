@@ -1,5 +1,6 @@
 #include <mpm/materials/material.h>
 #include <mpm/utilities/input_error.h>
+#include <mpm/utilities/numbers.h>
 
 #include <algorithm>
 #include <cctype>
@@ -108,7 +109,7 @@ namespace mpm {
                         "the subsection of the same name.");
       prm.declare_entry("Density",
                         "1000",
-                        dealii::Patterns::Double(0),
+                        mpm::NumberOrConstant(),
                         "Reference (initial) mass density rho_0 [kg/m^3]. "
                         "Must be positive.");
 
@@ -134,7 +135,7 @@ namespace mpm {
         throw InputError(where + ": unknown material model '" + model_name +
                          "'");
 
-      const double density = prm.get_double("Density");
+      const double density = mpm::get_number(prm, "Density");
       if (!(density > 0) || !std::isfinite(density))
         throw InputError(where + ": Density = " + prm.get("Density") +
                          " must be positive");

@@ -1,5 +1,6 @@
 #include <mpm/materials/newtonian_fluid.h>
 #include <mpm/utilities/input_error.h>
+#include <mpm/utilities/numbers.h>
 
 #include <cmath>
 
@@ -25,7 +26,7 @@ namespace mpm {
       // Ranges are checked in parse_parameters().
       prm.declare_entry("Viscosity",
                         "1e-3",
-                        dealii::Patterns::Double(),
+                        mpm::NumberOrConstant(),
                         "Dynamic (shear) viscosity mu [Pa s]. Must be "
                         "non-negative.");
       prm.declare_entry("Equation of state",
@@ -36,12 +37,12 @@ namespace mpm {
                         "'Tait': p = K/gamma (J^-gamma - 1).");
       prm.declare_entry("Bulk modulus",
                         "2.2e9",
-                        dealii::Patterns::Double(),
+                        mpm::NumberOrConstant(),
                         "Bulk modulus K at the reference density [Pa]. Must "
                         "be positive.");
       prm.declare_entry("Tait exponent",
                         "7",
-                        dealii::Patterns::Double(),
+                        mpm::NumberOrConstant(),
                         "Exponent gamma of the Tait equation of state [-], "
                         ">= 1. Not used by the linear law.");
     }
@@ -70,11 +71,11 @@ namespace mpm {
     void
     NewtonianFluid::parse_parameters(dealii::ParameterHandler &prm)
     {
-      mu    = prm.get_double("Viscosity");
+      mu    = mpm::get_number(prm, "Viscosity");
       eos   = prm.get("Equation of state") == "Tait" ? EquationOfState::tait :
                                                        EquationOfState::linear;
-      K     = prm.get_double("Bulk modulus");
-      gamma = prm.get_double("Tait exponent");
+      K     = mpm::get_number(prm, "Bulk modulus");
+      gamma = mpm::get_number(prm, "Tait exponent");
 
       if (!(mu >= 0) || !std::isfinite(mu))
         throw InputError("Viscosity = " + prm.get("Viscosity") +

@@ -2,6 +2,7 @@
 
 #include <mpm/materials/von_mises_plasticity.h>
 #include <mpm/utilities/input_error.h>
+#include <mpm/utilities/numbers.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,12 +15,12 @@ namespace mpm {
       elasticity::declare_parameters(prm);
       prm.declare_entry("Yield stress",
                         "1e6",
-                        dealii::Patterns::Double(),
+                        mpm::NumberOrConstant(),
                         "Initial uniaxial yield stress sigma_y [Pa]. Must "
                         "be positive.");
       prm.declare_entry("Hardening modulus",
                         "0",
-                        dealii::Patterns::Double(),
+                        mpm::NumberOrConstant(),
                         "Linear isotropic hardening modulus H [Pa]: the "
                         "yield stress is sigma_y + H alpha. Must be "
                         "non-negative; 0 is perfect plasticity.");
@@ -50,8 +51,8 @@ namespace mpm {
     VonMisesPlasticity::parse_parameters(dealii::ParameterHandler &prm)
     {
       constants = elasticity::parse_parameters(prm);
-      sigma_y   = prm.get_double("Yield stress");
-      H         = prm.get_double("Hardening modulus");
+      sigma_y   = mpm::get_number(prm, "Yield stress");
+      H         = mpm::get_number(prm, "Hardening modulus");
       if (!(sigma_y > 0) || !std::isfinite(sigma_y))
         throw InputError("Yield stress = " + prm.get("Yield stress") +
                          " must be positive");

@@ -4,6 +4,7 @@
 #include <mpm/parameters/parameters.h>
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
+#include <mpm/utilities/numbers.h>
 
 #include <filesystem>
 #include <fstream>
@@ -286,8 +287,9 @@ namespace mpm {
                         "Ball: centre [m].");
       prm.declare_entry("Radius",
                         "0.25",
-                        Patterns::Double(0),
-                        "Ball: radius [m].");
+                        NumberOrConstant(),
+                        "Ball: radius [m] (a number or an expression of the "
+                        "Constants).");
       prm.declare_entry("Refinements",
                         "2",
                         Patterns::Integer(0, 10),
@@ -356,7 +358,7 @@ namespace mpm {
       subdivisions =
         parse_unsigned_list(prm.get("Subdivisions"), dim, "Subdivisions");
       center                  = parse_point<dim>(prm.get("Center"), "Center");
-      radius                  = prm.get_double("Radius");
+      radius                  = get_number(prm, "Radius");
       refinements             = prm.get_integer("Refinements");
       mesh_file               = prm.get("Mesh file");
       particles_per_direction = prm.get_integer("Particles per direction");
@@ -450,46 +452,112 @@ namespace mpm {
     }
 
     namespace {
-      /// Parse with the working directory set to the file's folder, so
-      /// that `include other.prm` is found next to the including file.
-      void
-      parse_in_folder(ParameterHandler  &prm,
-                      const std::string &file_name,
-                      const bool         skip_undefined)
+      /// One line of a parameter file after `include` expansion, with
+      /// where it came from.
+      struct SourceLine
       {
-        namespace fs        = std::filesystem;
-        const fs::path path = fs::absolute(file_name);
-        const fs::path cwd  = fs::current_path();
-        fs::current_path(path.parent_path());
+        std::string  text, file;
+        unsigned int line;
+      };
+
+      /**
+       * Read @p file_name and expand `include other.prm` lines in place,
+       * each resolved next to the file that contains it (deal.II itself
+       * resolves includes against the working directory).
+       */
+      void
+      expand_includes(const std::string       &file_name,
+                      std::vector<SourceLine> &out,
+                      const unsigned int       depth)
+      {
+        namespace fs = std::filesystem;
+        std::ifstream in(file_name);
+        if (!in)
+          throw InputError("Cannot open the parameter file '" + file_name +
+                           "'");
+        if (depth > 20)
+          throw InputError("Parameter file '" + file_name +
+                           "': includes nested more than 20 deep (a cycle?)");
+        std::string  text;
+        unsigned int n = 0;
+        while (std::getline(in, text))
+          {
+            ++n;
+            const auto first = text.find_first_not_of(" \t");
+            if (first != std::string::npos &&
+                (text.compare(first, 8, "include ") == 0 ||
+                 text.compare(first, 8, "INCLUDE ") == 0))
+              {
+                std::string name = text.substr(first + 8);
+                const auto  hash = name.find('#');
+                if (hash != std::string::npos)
+                  name = name.substr(0, hash);
+                name.erase(0, name.find_first_not_of(" \t"));
+                name.erase(name.find_last_not_of(" \t\r") + 1);
+                fs::path path(name);
+                if (path.is_relative())
+                  path = fs::path(file_name).parent_path() / path;
+                if (!fs::exists(path))
+                  throw InputError("line " + std::to_string(n) + " of '" +
+                                   file_name + "': the included file '" + name +
+                                   "' does not exist (looked for " +
+                                   path.string() + ")");
+                expand_includes(path.string(), out, depth + 1);
+              }
+            else
+              out.push_back({text, file_name, n});
+          }
+      }
+
+      /// Parse the expanded file; errors name the original file and line.
+      void
+      parse_expanded(ParameterHandler  &prm,
+                     const std::string &file_name,
+                     const bool         skip_undefined)
+      {
+        std::vector<SourceLine> lines;
+        expand_includes(file_name, lines, 0);
+        std::string all;
+        for (const auto &l : lines)
+          all += l.text + '\n';
+        std::istringstream stream(all);
         try
           {
-            prm.parse_input(path.string(), "", skip_undefined, !skip_undefined);
+            prm.parse_input(stream, file_name, "", skip_undefined);
           }
-        catch (...)
+        catch (const std::exception &e)
           {
-            fs::current_path(cwd);
-            throw;
+            // Replace deal.II's "Line <N> of file <F>:" by the real place.
+            std::string msg = clean_dealii_message(e.what());
+            const auto  a   = msg.find("Line <");
+            const auto  b   = a == std::string::npos ? a : msg.find('>', a);
+            const auto  c = b == std::string::npos ? b : msg.find(">:", b + 1);
+            if (c != std::string::npos)
+              {
+                const unsigned long k =
+                  std::stoul(msg.substr(a + 6, b - a - 6)) - 1;
+                if (k < lines.size())
+                  msg = "line " + std::to_string(lines[k].line) + " of '" +
+                        lines[k].file + "':" + msg.substr(c + 2);
+              }
+            throw InputError(msg);
           }
-        fs::current_path(cwd);
       }
     } // namespace
 
     Preamble
     read_preamble(const std::string &file_name)
     {
-      std::ifstream in(file_name);
-      if (!in)
-        throw InputError("Cannot open the parameter file '" + file_name + "'");
       ParameterHandler prm;
       declare_preamble(prm);
       try
         {
-          parse_in_folder(prm, file_name, /*skip_undefined=*/true);
+          parse_expanded(prm, file_name, /*skip_undefined=*/true);
         }
-      catch (const std::exception &e)
+      catch (const InputError &e)
         {
           throw InputError("Error reading the parameter file '" + file_name +
-                           "': " + clean_dealii_message(e.what()));
+                           "': " + e.what());
         }
       return {static_cast<unsigned int>(prm.get_integer("Dimension")),
               static_cast<unsigned int>(prm.get_integer("Number of bodies"))};
@@ -498,19 +566,14 @@ namespace mpm {
     void
     parse_file(ParameterHandler &prm, const std::string &file_name)
     {
-      std::ifstream in(file_name);
-      if (!in)
-        throw InputError("Cannot open the parameter file '" + file_name + "'");
       try
         {
-          parse_in_folder(prm, file_name, /*skip_undefined=*/false);
+          parse_expanded(prm, file_name, /*skip_undefined=*/false);
         }
-      catch (const std::exception &e)
+      catch (const InputError &e)
         {
-          // deal.II's message names the file and line.
-          const std::string msg = clean_dealii_message(e.what());
           throw InputError("Error in the parameter file '" + file_name +
-                           "':\n    " + msg);
+                           "':\n    " + e.what());
         }
     }
 
@@ -593,6 +656,7 @@ namespace mpm {
       boundary.parse_parameters(prm);
       output.parse_parameters(prm);
       bodies.resize(n_bodies);
+      const ConstantsScope scope(constants);
       prm.enter_subsection("Bodies");
       for (unsigned int i = 0; i < n_bodies; ++i)
         {

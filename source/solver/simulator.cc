@@ -6,6 +6,7 @@
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
 #include <mpm/utilities/input_error.h>
+#include <mpm/utilities/numbers.h>
 
 #include <chrono>
 #include <filesystem>
@@ -98,6 +99,7 @@ namespace mpm {
         prm.enter_subsection("Bodies");
         prm.enter_subsection(Parameters::body_section(b));
         prm.enter_subsection("Material");
+        const ConstantsScope scope(params.constants);
         body.material = materials::create_material(prm,
                                                    params.kinematics,
                                                    where + "/Material");

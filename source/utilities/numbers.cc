@@ -1,0 +1,83 @@
+#include <deal.II/base/utilities.h>
+
+#include <mpm/utilities/input_error.h>
+#include <mpm/utilities/numbers.h>
+
+#include <cmath>
+
+#include <muParser.h>
+
+namespace mpm {
+  namespace {
+    const std::map<std::string, double> *current_constants = nullptr;
+  }
+
+  bool
+  NumberOrConstant::match(const std::string &s) const
+  {
+    return s.find_first_not_of(" \t") != std::string::npos;
+  }
+
+  std::string
+  NumberOrConstant::description(const OutputStyle) const
+  {
+    return "[Number or expression of Constants]";
+  }
+
+  std::unique_ptr<dealii::Patterns::PatternBase>
+  NumberOrConstant::clone() const
+  {
+    return std::make_unique<NumberOrConstant>();
+  }
+
+  ConstantsScope::ConstantsScope(const std::map<std::string, double> &c)
+    : previous(current_constants)
+  {
+    current_constants = &c;
+  }
+
+  ConstantsScope::~ConstantsScope()
+  {
+    current_constants = previous;
+  }
+
+  double
+  get_number(const dealii::ParameterHandler &prm, const std::string &entry)
+  {
+    const std::string text = prm.get(entry);
+    try
+      {
+        std::size_t  used  = 0;
+        const double value = std::stod(text, &used);
+        if (text.find_first_not_of(" \t", used) == std::string::npos)
+          return value;
+      }
+    catch (...)
+      {}
+    try
+      {
+        mu::Parser p;
+        p.DefineConst("pi", M_PI);
+        if (current_constants)
+          for (const auto &[name, value] : *current_constants)
+            p.DefineConst(name, value);
+        p.SetExpr(text);
+        const double value = p.Eval();
+        if (!std::isfinite(value))
+          throw InputError(entry + " = '" + text + "' is not finite");
+        return value;
+      }
+    catch (const mu::Parser::exception_type &e)
+      {
+        std::string known;
+        if (current_constants)
+          for (const auto &c : *current_constants)
+            known += (known.empty() ? "" : ", ") + c.first;
+        throw InputError(entry + " = '" + text +
+                         "' is neither a number nor an expression of the "
+                         "Constants (" +
+                         (known.empty() ? "none defined" : known) +
+                         "): " + e.GetMsg());
+      }
+  }
+} // namespace mpm
