@@ -93,10 +93,15 @@ namespace mpm {
   StatisticsFile<dim>::open(const std::string              &file_name,
                             const std::vector<std::string> &extra)
   {
+    // A plain header line: pandas (sep=r"\s+") and gnuplot (using
+    // 'time':'kinetic_energy') both read the columns by name.
     out.open(file_name);
-    out << "#";
+    bool first = true;
     for (const auto &c : column_names(extra))
-      out << ' ' << c;
+      {
+        out << (first ? "" : " ") << c;
+        first = false;
+      }
     out << '\n' << std::flush;
   }
 

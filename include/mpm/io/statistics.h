@@ -29,10 +29,10 @@ namespace mpm {
   };
 
   /**
-   * The statistics file: one row per output time, whitespace separated
-   * with a '#' header naming every column (gnuplot and pandas read it:
-   * pandas.read_csv(f, sep=r"\s+", comment=None, header=0) after stripping
-   * the leading '# ').
+   * The statistics file: one row per output time, whitespace separated,
+   * with a header line naming every column: pandas.read_csv(f,
+   * sep=r"\s+") and gnuplot (plot f using 'time':'kinetic_energy') read
+   * it as it is.
    */
   template <int dim>
   class StatisticsFile
