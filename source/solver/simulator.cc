@@ -256,6 +256,7 @@ namespace mpm {
         particle_handler.reserve(particle_handler.n_locally_owned_particles() +
                                  local_count);
         unsigned long long  inserted = 0;
+        std::string         bad_value;
         std::vector<double> properties;
         for_each_chunk([&](const auto &seeds,
                            const auto &seed_ids,
@@ -276,6 +277,17 @@ namespace mpm {
           for (const std::size_t i : order)
             {
               initial_properties(body, seeds[i], rho, properties);
+              if (bad_value.empty())
+                for (const double v : properties)
+                  if (!std::isfinite(v))
+                    {
+                      std::ostringstream msg;
+                      msg << where << ": the initial state is not finite "
+                          << "(check Initial velocity and Initial stress) at "
+                          << "the particle at (" << seeds[i].position << ")";
+                      bad_value = msg.str();
+                      break;
+                    }
               particle_handler.insert_particle(seeds[i].position,
                                                xi[i],
                                                id_offset + seed_ids[i],
@@ -286,6 +298,14 @@ namespace mpm {
             }
         });
 
+        {
+          const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
+          const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
+          const unsigned int bad    = Utilities::MPI::min(
+            bad_value.empty() ? nranks : rank, comm);
+          if (bad < nranks)
+            throw InputError(Utilities::MPI::broadcast(comm, bad_value, bad));
+        }
         if (Utilities::MPI::sum(inserted, comm) != expected)
           {
             // Name the first particle no rank took: the body sticks out.
