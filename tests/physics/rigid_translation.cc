@@ -17,7 +17,7 @@ main(int argc, char **argv)
   mpm_test::Case<2> c(R"(
 subsection Grid
   set Type = mesh file
-  set Mesh file = )" SOURCE_DIR R"(/distorted_grid_2d.ucd
+  set Mesh file = )" SOURCE_DIR R"(/../solver/distorted_grid_2d.ucd
 end
 subsection Bodies
   subsection Body 0
