@@ -164,8 +164,12 @@ main(int argc, char **argv)
     }
   catch (const std::exception &e)
     {
-      if (root)
-        std::cerr << "mpm: internal error: " << e.what() << std::endl;
+      // Possibly on this rank only: report here and stop every rank.
+      std::cerr << "mpm: internal error on rank "
+                << dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)
+                << ": " << e.what() << std::endl;
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        MPI_Abort(MPI_COMM_WORLD, 3);
       return 3;
     }
   return 0;

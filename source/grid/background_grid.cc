@@ -76,9 +76,13 @@ namespace mpm {
         std::array<Point<dim>, n_vertices> v;
         for (unsigned int i = 0; i < n_vertices; ++i)
           v[i] = cell->vertex(i);
+        // Round-off in vertex coordinates scales with their magnitude.
+        double size = 0;
+        for (const auto &x : v)
+          size = std::max(size, x.norm());
         const double h = cell->minimum_vertex_distance();
         auto        &g = cell_geometry[cell->active_cell_index()];
-        g.reinit(v, 1e-12 * h);
+        g.reinit(v, 1e-12 * h + 1e-14 * size);
         all_boxes = all_boxes && g.is_box;
 
         cell->get_dof_indices(dof_indices);
@@ -176,15 +180,35 @@ namespace mpm {
               }
           }
         else
-          for (const auto &n : normals[i])
-            {
-              // Gram-Schmidt: keep only directions not yet constrained.
-              Tensor<1, dim> m = n;
-              for (unsigned int k = 0; k < c.n_normals; ++k)
-                m -= (m * c.normals[k]) * c.normals[k];
-              if (m.norm() > 1e-6 && c.n_normals < dim)
-                c.normals[c.n_normals++] = m / m.norm();
-            }
+          {
+            // Faces of one smooth wall (a faceted circle, say) differ by
+            // small angles: they form one direction, their mean normal.
+            // Only faces meeting at a real corner (more than 30 degrees)
+            // add a direction.
+            std::vector<Tensor<1, dim>> walls;
+            for (const auto &n : normals[i])
+              {
+                bool merged = false;
+                for (auto &w : walls)
+                  if (n * w / w.norm() > std::cos(M_PI / 6))
+                    {
+                      w += n;
+                      merged = true;
+                      break;
+                    }
+                if (!merged)
+                  walls.push_back(n);
+              }
+            for (const auto &w : walls)
+              {
+                // Gram-Schmidt: keep only directions not yet constrained.
+                Tensor<1, dim> m = w / w.norm();
+                for (unsigned int k = 0; k < c.n_normals; ++k)
+                  m -= (m * c.normals[k]) * c.normals[k];
+                if (m.norm() > 1e-6 && c.n_normals < dim)
+                  c.normals[c.n_normals++] = m / m.norm();
+              }
+          }
         if (c.n_normals > 0)
           {
             constraint_of_node[i] = constraints.size();

@@ -4,6 +4,7 @@
 #include <mpm/particles/particle_layout.h>
 
 #include <iomanip>
+#include <limits>
 
 namespace mpm {
   using namespace dealii;
@@ -33,12 +34,21 @@ namespace mpm {
         local[0] += 1;
         local[1] += m;
         local[2] += 0.5 * m * v2;
-        local[3] +=
-          prop[L::volume0] *
-          mat.strain_energy_density(
-            load_stress(prop + L::stress),
-            embed<dim>(load_matrix<dim>(prop + L::F), 1.),
-            ArrayView<const double>(prop + L::history, mat.n_history()));
+        // A collective sum: a material that throws here (inverted
+        // particle) must not leave this rank alone, so it counts as NaN.
+        double energy;
+        try
+          {
+            energy = mat.strain_energy_density(
+              load_stress(prop + L::stress),
+              embed<dim>(load_matrix<dim>(prop + L::F), 1.),
+              ArrayView<const double>(prop + L::history, mat.n_history()));
+          }
+        catch (const std::exception &)
+          {
+            energy = std::numeric_limits<double>::quiet_NaN();
+          }
+        local[3] += prop[L::volume0] * energy;
         Tensor<1, 3> x, v;
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -103,6 +113,9 @@ namespace mpm {
         first = false;
       }
     out << '\n' << std::flush;
+    if (!out)
+      throw std::runtime_error("cannot write the statistics file '" +
+                               file_name + "'");
   }
 
   template <int dim>
@@ -129,6 +142,8 @@ namespace mpm {
     for (const double e : extra)
       out << ' ' << e;
     out << '\n' << std::flush;
+    if (!out)
+      throw std::runtime_error("cannot write the statistics file");
   }
 
   template struct GlobalStatistics<1>;

@@ -301,8 +301,8 @@ namespace mpm {
         {
           const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
           const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
-          const unsigned int bad    = Utilities::MPI::min(
-            bad_value.empty() ? nranks : rank, comm);
+          const unsigned int bad =
+            Utilities::MPI::min(bad_value.empty() ? nranks : rank, comm);
           if (bad < nranks)
             throw InputError(Utilities::MPI::broadcast(comm, bad_value, bad));
         }
@@ -451,12 +451,30 @@ namespace mpm {
     TimerOutput::Scope t(timer, "position update");
     lost_messages.clear();
     if (!relocate_particles(background, particle_handler, comm))
-      particle_handler.sort_particles_into_subdomains_and_cells();
+      {
+        particle_handler.sort_particles_into_subdomains_and_cells();
+        ++n_global_sorts;
+      }
     if (!lost_messages.empty() && !params.boundary.remove_lost_particles &&
         local_error.empty())
       local_error = lost_messages.front() +
                     " (set Boundary conditions/Particles leaving the grid = "
                     "remove to delete such particles instead)";
+  }
+
+  template <int dim>
+  template <typename Error>
+  void
+  Simulator<dim>::throw_if_any(const std::string &prefix,
+                               const std::string &local_problem)
+  {
+    const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int first =
+      Utilities::MPI::min(local_problem.empty() ? nranks : rank, comm);
+    if (first < nranks)
+      throw Error(prefix +
+                  Utilities::MPI::broadcast(comm, local_problem, first));
   }
 
   template <int dim>
@@ -501,19 +519,38 @@ namespace mpm {
     const auto &out   = params.output;
     print_header();
 
-    // Only now, with the input checked, touch the output folder.
+    // Only now, with the input checked, touch the output folder (rank 0;
+    // every rank learns whether that worked).
+    std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      std::filesystem::create_directories(out.directory);
-    MPI_Barrier(comm);
+      try
+        {
+          std::filesystem::create_directories(out.directory);
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
+    throw_if_any<InputError>("Output/Directory = '" + out.directory +
+                               "' cannot be created: ",
+                             problem);
     writer          = std::make_unique<OutputWriter<dim>>(comm,
                                                  out.directory,
                                                  layout,
                                                  history_names);
     statistics_file = std::make_unique<StatisticsFile<dim>>();
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      statistics_file->open(out.directory + "/statistics.txt",
-                            benchmark ? benchmark->columns() :
-                                        std::vector<std::string>());
+      try
+        {
+          statistics_file->open(out.directory + "/statistics.txt",
+                                benchmark ? benchmark->columns() :
+                                            std::vector<std::string>());
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
+    throw_if_any<InputError>("", problem);
 
     // The first output has no grid fields yet: fill them from the state.
     particle_to_grid(transfer::P2GContent::mass_momentum);
@@ -559,7 +596,7 @@ namespace mpm {
     // Throughput of the time loop without output: the slowest rank counts.
     const double loop_seconds =
       Utilities::MPI::max(wall_seconds() - wall_start - output_seconds, comm);
-    if (!(current_time >= end - tiny))
+    if (last_output_step != current_step)
       write_output(); // stopped by the step limit
     print_progress(true);
     const double updates = double(particle_handler.n_global_particles()) *
@@ -628,17 +665,44 @@ namespace mpm {
     const auto &out   = params.output;
     const auto  stats = statistics();
     const auto  extra = benchmark_values();
-    statistics_file->write_row(
-      current_time, current_step, last_dt, stats, extra);
+    last_output_step  = current_step;
+
+    // Each writer has collective parts; a failure on one rank (a full
+    // disk, say) is collected and reported on all ranks afterwards, so no
+    // rank waits for another that has given up.
+    std::string problem;
+    auto        attempt = [&](const auto &write) {
+      try
+        {
+          write();
+        }
+      catch (const std::exception &e)
+        {
+          if (problem.empty())
+            problem = clean_dealii_message(e.what());
+        }
+    };
+    attempt([&]() {
+      statistics_file->write_row(
+        current_time, current_step, last_dt, stats, extra);
+    });
     if (out.write_vtu)
       {
-        writer->write_particles_vtu(particle_handler, current_time);
+        attempt([&]() {
+          writer->write_particles_vtu(particle_handler, current_time);
+        });
         if (out.write_grid)
-          writer->write_grid_vtu(background, p2g, kinematics, current_time);
+          attempt([&]() {
+            writer->write_grid_vtu(background, p2g, kinematics, current_time);
+          });
       }
     if (out.write_csv)
-      writer->write_particles_csv(particle_handler, current_time);
+      attempt(
+        [&]() { writer->write_particles_csv(particle_handler, current_time); });
     writer->advance();
+    throw_if_any<RuntimeError>("while writing output at step " +
+                                 std::to_string(current_step) + ": ",
+                               problem);
 
     if (!out.test_summary.empty())
       {

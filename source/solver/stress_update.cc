@@ -51,13 +51,41 @@ namespace mpm {
 
             const auto &material =
               *bodies[static_cast<unsigned int>(prop[L::body])].material;
+            // An inverted particle stops the run on every rank (through the
+            // step's collective error check), never inside the material.
+            if (!(J > 0 && std::isfinite(J)))
+              {
+                if (result.error.empty())
+                  {
+                    std::ostringstream s;
+                    s << "non-positive volume (det F = " << J
+                      << ") of particle " << p.get_id() << " at ("
+                      << p.get_location() << ")";
+                    result.error = s.str();
+                  }
+                continue;
+              }
             pk.velocity_gradient        = embed<dim>(grad_v, 0.);
             pk.F                        = embed<dim>(F, 1.);
             SymmetricTensor<2, 3> sigma = load_stress(prop + L::stress);
-            material.update_stress(pk,
-                                   sigma,
-                                   ArrayView<double>(prop + L::history,
-                                                     material.n_history()));
+            try
+              {
+                material.update_stress(pk,
+                                       sigma,
+                                       ArrayView<double>(prop + L::history,
+                                                         material.n_history()));
+              }
+            catch (const std::exception &e)
+              {
+                if (result.error.empty())
+                  {
+                    std::ostringstream s;
+                    s << "the material of particle " << p.get_id() << " at ("
+                      << p.get_location() << ") failed: " << e.what();
+                    result.error = s.str();
+                  }
+                continue;
+              }
             store_stress(sigma, prop + L::stress);
 
             double speed2 = 0;
@@ -67,14 +95,10 @@ namespace mpm {
             result.stable_time_step =
               std::min(result.stable_time_step, h / (c + std::sqrt(speed2)));
 
-            if (!(std::isfinite(sigma.norm()) && J > 0 && std::isfinite(J)) &&
-                result.error.empty())
+            if (!std::isfinite(sigma.norm()) && result.error.empty())
               {
                 std::ostringstream s;
-                s << (J > 0 ? "non-finite stress" :
-                              "non-positive volume (det F = " +
-                                std::to_string(J) + ")")
-                  << " of particle " << p.get_id() << " at ("
+                s << "non-finite stress of particle " << p.get_id() << " at ("
                   << p.get_location() << ")";
                 result.error = s.str();
               }

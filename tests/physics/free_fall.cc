@@ -37,6 +37,9 @@ end)");
   const double v_cm = s.momentum[1] / s.mass;
   mpm_test::check_small("v_cm + g t", (v_cm + 9.81 * t) / (9.81 * t), 1e-12);
   mpm_test::check_small("v_cm_x", s.momentum[0] / s.mass, 1e-12);
+  mpm_test::check_small("steps that needed deal.II's global sort",
+                        sim.n_global_sorts_used(),
+                        0);
   mpm_test::check_small("strain energy / kinetic energy",
                         s.strain_energy / s.kinetic_energy,
                         1e-20);

@@ -8,7 +8,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  mpm_test::Case<2> c(R"(
+  mpm_test::Case<2>                        c(R"(
 subsection Grid
   set Lower corner = 0, 0
   set Upper corner = 1, 0.5
@@ -29,8 +29,8 @@ subsection Bodies
     end
   end
 end)");
-  auto      &sim = *c.simulator;
-  const auto s0  = sim.statistics();
+  auto                                    &sim = *c.simulator;
+  const auto                               s0  = sim.statistics();
   while (sim.time() < 0.1 - 1e-12)
     sim.do_time_step(std::min(0.5 * sim.stable_time_step(), 0.1 - sim.time()));
   sim.particles().update_cached_numbers();

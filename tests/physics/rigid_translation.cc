@@ -90,6 +90,9 @@ end)");
                         double(id_sum) - double(n0 * (n0 - 1) / 2),
                         0);
   mpm_test::check_small("max |x - (X + v t)|", max_position, 1e-12);
+  mpm_test::check_small("steps that needed deal.II's global sort",
+                        sim.n_global_sorts_used(),
+                        0);
   mpm_test::check_small("max |stress| [Pa]", max_stress, 1e-9);
   mpm_test::check_small("max |x(xi) - x|", max_mapping, 1e-12);
   // deal.II's inverse mapping stops at about 1e-11; a particle in the

@@ -71,6 +71,14 @@ namespace mpm {
     std::vector<double>
     benchmark_values();
 
+    /// Steps in which the project's particle relocation could not place
+    /// every particle and deal.II's global sort ran instead.
+    unsigned int
+    n_global_sorts_used() const
+    {
+      return n_global_sorts;
+    }
+
     dealii::Particles::ParticleHandler<dim> &
     particles()
     {
@@ -127,6 +135,12 @@ namespace mpm {
     void
     check_errors();
 
+    /// Collective: if any rank has a problem, throw Error(prefix + the
+    /// first rank's message) on every rank.
+    template <typename Error>
+    void
+    throw_if_any(const std::string &prefix, const std::string &local_problem);
+
     const Parameters::AllParameters<dim> &params;
     dealii::ParameterHandler             &prm;
     MPI_Comm                              comm;
@@ -156,6 +170,8 @@ namespace mpm {
     std::unique_ptr<StatisticsFile<dim>> statistics_file;
     std::vector<std::string>             summary_rows;
     double                               next_output_time = 0;
-    double                               wall_start = 0, last_progress = 0;
+    unsigned int last_output_step = dealii::numbers::invalid_unsigned_int;
+    unsigned int n_global_sorts   = 0;
+    double       wall_start = 0, last_progress = 0;
   };
 } // namespace mpm
