@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# usage: check_bad_input.sh MPM CASE.prm WORKDIR
+# usage: check_bad_input.sh MPM CASE.prm WORKDIR [NPROC]
 set -u
-mpm=$1 case=$2 work=$3
+mpm=$1 case=$2 work=$3 np=${4:-1}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
 rm -rf "$work" && mkdir -p "$work/results" && cd "$work" || exit 1
 echo "results of an earlier run" > results/sentinel.txt
 snapshot() { (cd results && ls -l --time-style=full-iso . && md5sum *) | md5sum; }
@@ -15,7 +17,12 @@ else
   status=1 expect="Cannot open the parameter file" keep=0
 fi
 
-"$mpm" "$case" > stdout.txt 2> stderr.txt
+if [ "$np" -gt 1 ]; then
+  # under MPI every rank must stop: a hang is a failure (timeout)
+  timeout 120 mpirun -np "$np" "$mpm" "$case" > stdout.txt 2> stderr.txt
+else
+  "$mpm" "$case" > stdout.txt 2> stderr.txt
+fi
 rc=$?
 cat stderr.txt
 if [ "$rc" != "$status" ]; then
