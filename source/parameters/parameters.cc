@@ -162,7 +162,10 @@ namespace mpm {
                         Patterns::Selection("USF|USL|MUSL"),
                         "When the stress is updated: USF (before the "
                         "internal force), USL (after the grid update), MUSL "
-                        "(after re-mapping the updated particle momentum).");
+                        "(after re-mapping the updated particle momentum). "
+                        "USL reads the grid velocity of nodes that particles "
+                        "barely touch at free surfaces; it then needs a CFL "
+                        "number of about 0.1 (see doc/theory.md).");
       prm.declare_entry("Time step control",
                         "CFL",
                         Patterns::Selection("fixed|CFL"),
