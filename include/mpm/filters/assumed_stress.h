@@ -1,0 +1,93 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <vector>
+
+namespace mpm {
+  namespace filters {
+    /// One particle's part in a cell's stress projection.
+    template <int dim>
+    struct StressSample
+    {
+      dealii::Point<dim>              xi;     ///< reference coords, [0,1]^dim
+      double                          weight; ///< m_p or V_p (see Metric)
+      dealii::SymmetricTensor<2, dim> stress; ///< in-plane Cauchy stress
+    };
+
+    /// The inner product of the projection.
+    enum class Metric
+    {
+      mass,      ///< the seed's: W = I (Frobenius), weights m_p
+      compliance ///< Hellinger-Reissner: W = C^-1, weights V_p
+    };
+
+    /**
+     * The assumed-stress filter of one cell: the L2 projection of the
+     * particle stresses onto the Pian-Sumihara field of the cell,
+     *   H = sum_p S_p^T W S_p w_p,  R = sum_p S_p^T W sigma_p w_p,
+     *   beta = H^-1 R,  sigma_p <- S_p beta.
+     * S is the 5-beta field (2D) or the 18-beta field (3D) in natural
+     * coordinates r = 2 xi - 1, mapped to Cartesian components with the
+     * Jacobian J0 at the cell centre, sigma = J0 Sigma J0^T, so distorted
+     * cells are handled. W is the Frobenius metric (rotation invariant,
+     * shear counted twice) or the compliance C^-1 of the material.
+     *
+     * Cells whose H is singular or ill-conditioned (one particle,
+     * collinear particles) fall back to the constant-stress subspace; a
+     * cell without weight is left unchanged. Never produces NaN.
+     */
+    template <int dim>
+    class AssumedStressProjection
+    {
+    public:
+      static constexpr unsigned int n_beta  = dim == 2 ? 5 : 18;
+      static constexpr unsigned int n_voigt = dim == 2 ? 3 : 6;
+
+      /// What a projection did.
+      enum class Result
+      {
+        full,     ///< the whole assumed-stress field
+        constant, ///< fallback: the constant-stress subspace
+        unchanged ///< nothing to project (no weight)
+      };
+
+      /**
+       * @p J0: Jacobian dx/dxi of the cell at its centre. @p compliance:
+       * the material's compliance, used with Metric::compliance.
+       */
+      AssumedStressProjection(const dealii::Tensor<2, dim> &J0,
+                              const Metric                  metric,
+                              const dealii::SymmetricTensor<4, dim> &
+                                compliance = dealii::SymmetricTensor<4, dim>());
+
+      /// Replace the samples' stresses by the projected field.
+      Result
+      project(std::vector<StressSample<dim>> &samples) const;
+
+      /// The assumed-stress field at xi for coefficients beta (Cartesian).
+      dealii::SymmetricTensor<2, dim>
+      field(const dealii::Point<dim> &xi, const double *beta) const;
+
+    private:
+      /// Row-major n_voigt x n_beta matrix S(xi), Cartesian components.
+      void
+      basis(const dealii::Point<dim> &xi, double *S) const;
+
+      /// Cartesian Voigt components of natural unit stresses (columns).
+      double transform[n_voigt][n_voigt];
+      /// Metric in Voigt form.
+      double W[n_voigt][n_voigt];
+    };
+
+    /// Isotropic linear elastic compliance of the in-plane stresses: plane
+    /// strain (or 3D) if @p plane_stress is false.
+    template <int dim>
+    dealii::SymmetricTensor<4, dim>
+    isotropic_compliance(const double youngs_modulus,
+                         const double poissons_ratio,
+                         const bool   plane_stress);
+  } // namespace filters
+} // namespace mpm
