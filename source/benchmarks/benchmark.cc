@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <mpm/benchmarks/benchmark.h>
+#include <mpm/benchmarks/cantilever.h>
 #include <mpm/benchmarks/spinning_disk.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/utilities/input_error.h>
@@ -108,8 +109,17 @@ namespace mpm {
           else
             throw InputError("Benchmark = spinning disk needs Dimension = 2");
         }
+      if (name == "cantilever")
+        {
+          if constexpr (dim >= 2)
+            return std::make_unique<Cantilever<dim>>(
+              constant(constants, "L", name), constant(constants, "H", name));
+          else
+            throw InputError("Benchmark = cantilever needs Dimension 2 or 3");
+        }
       throw InputError("Benchmark = '" + name +
-                       "' is unknown; known: none, axial bar, spinning disk");
+                       "' is unknown; known: none, axial bar, spinning disk, "
+                       "cantilever");
     }
 
     template std::unique_ptr<Benchmark<1>>

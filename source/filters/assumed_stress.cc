@@ -171,16 +171,15 @@ namespace mpm {
       Result result       = Result::full;
       // Relative tolerance on the condition: below it the layout of the
       // particles cannot determine the linear terms.
-      // H is symmetric positive semi-definite; its eigenvalues tell
-      // reliably whether the particle layout determines every beta.
-      const Eigen::SelfAdjointEigenSolver<Matrix> eigen(H);
-      const auto &lambda = eigen.eigenvalues(); // ascending
-      if (eigen.info() == Eigen::Success &&
-          lambda(0) > 1e-10 * lambda(n_beta - 1))
+      // H is symmetric positive semi-definite. A pivoted LDL^T whose
+      // smallest pivot is tiny against the largest says that the particle
+      // layout does not determine every beta.
+      const Eigen::LDLT<Matrix> ldlt(H);
+      const auto               &D = ldlt.vectorD();
+      if (ldlt.info() == Eigen::Success &&
+          D.minCoeff() > 1e-10 * D.cwiseAbs().maxCoeff())
         {
-          const Vector b =
-            eigen.eigenvectors() *
-            (eigen.eigenvectors().transpose() * R).cwiseQuotient(lambda);
+          const Vector b = ldlt.solve(R);
           for (unsigned int k = 0; k < n_beta; ++k)
             beta[k] = b(k);
         }

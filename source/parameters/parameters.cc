@@ -346,6 +346,22 @@ namespace mpm {
       prm.enter_subsection("Material");
       materials::declare_material_parameters(prm);
       prm.leave_subsection();
+      prm.enter_subsection("Locking remedies");
+      prm.declare_entry(
+        "Stress filter",
+        "none",
+        Patterns::Selection("none|assumed stress"),
+        "assumed stress: after every stress update, project the stresses of "
+        "this body's particles in each cell onto the Pian-Sumihara field of "
+        "the cell (5 parameters in 2D, 18 in 3D; doc/theory.md). 2D and 3D.");
+      prm.declare_entry("Filter metric",
+                        "mass",
+                        Patterns::Selection("mass|compliance"),
+                        "mass: the seed's projection (Frobenius inner product, "
+                        "weights m_p); compliance: the Hellinger-Reissner "
+                        "projection (inner product C^-1, weights V_p), for "
+                        "materials with elastic moduli.");
+      prm.leave_subsection();
     }
 
     template <int dim>
@@ -370,6 +386,13 @@ namespace mpm {
       body_force              = prm.get("Body force");
       traction                = prm.get("Traction");
       traction_boundary_ids   = parse_id_list(prm.get("Traction boundary ids"));
+      prm.enter_subsection("Locking remedies");
+      assumed_stress_filter = prm.get("Stress filter") == "assumed stress";
+      compliance_metric     = prm.get("Filter metric") == "compliance";
+      prm.leave_subsection();
+      if (assumed_stress_filter && dim == 1)
+        throw InputError("Locking remedies/Stress filter = assumed stress "
+                         "needs Dimension 2 or 3");
       if (geometry == Geometry::box)
         for (unsigned int d = 0; d < dim; ++d)
           if (!(upper[d] > lower[d]))

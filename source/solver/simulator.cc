@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <mpm/filters/stress_filter.h>
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/particle_relocation.h>
 #include <mpm/solver/simulator.h>
@@ -139,6 +140,14 @@ namespace mpm {
                                             where + "/Traction");
         layout.n_history =
           std::max(layout.n_history, body.material->n_history());
+        any_filter = any_filter || body.prm.assumed_stress_filter;
+        double E = 0, nu = 0;
+        if (body.prm.assumed_stress_filter && body.prm.compliance_metric &&
+            !body.material->elastic_moduli(E, nu))
+          throw InputError(where +
+                           "/Locking remedies: Filter metric = compliance "
+                           "needs a material with elastic moduli; '" +
+                           body.material->name() + "' has none");
         if (body.material->n_history() > 0 && history_names.empty())
           history_names = body.material->history_names();
       }
@@ -365,6 +374,7 @@ namespace mpm {
             local_error = e;
         }
         update_stress(dt);
+        filter_stress();
         particle_to_grid(P2GContent::force);
         update_grid(dt);
         grid_to_particle(dt);
@@ -377,6 +387,7 @@ namespace mpm {
         if (params.time.scheme == Scheme::musl)
           remap_momentum();
         update_stress(dt);
+        filter_stress();
       }
     update_positions();
     current_time += dt;
@@ -442,6 +453,17 @@ namespace mpm {
     stable_dt = r.stable_time_step;
     if (local_error.empty())
       local_error = r.error;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::filter_stress()
+  {
+    if (!any_filter)
+      return;
+    TimerOutput::Scope t(timer, "stress filter");
+    n_filter_fallbacks +=
+      filters::apply_stress_filter(background, particle_handler, bodies);
   }
 
   template <int dim>

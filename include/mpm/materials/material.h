@@ -98,6 +98,18 @@ namespace mpm {
       virtual double
       wave_speed(const Tensor<2, 3> &F) const = 0;
 
+      /**
+       * Small-strain isotropic moduli, if the model has them: the
+       * compliance metric of the assumed-stress filter needs them.
+       */
+      virtual bool
+      elastic_moduli(double &youngs_modulus, double &poissons_ratio) const
+      {
+        (void)youngs_modulus;
+        (void)poissons_ratio;
+        return false;
+      }
+
       /// Reference mass density rho_0.
       double
       reference_density() const

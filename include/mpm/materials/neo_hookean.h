@@ -54,6 +54,14 @@ namespace mpm {
         return constants;
       }
 
+      bool
+      elastic_moduli(double &E, double &nu) const override
+      {
+        E  = constants.youngs_modulus;
+        nu = constants.poissons_ratio;
+        return true;
+      }
+
     private:
       elasticity::IsotropicConstants constants;
     };

@@ -64,6 +64,14 @@ namespace mpm {
         return constants;
       }
 
+      bool
+      elastic_moduli(double &E, double &nu) const override
+      {
+        E  = constants.youngs_modulus;
+        nu = constants.poissons_ratio;
+        return true;
+      }
+
       double
       yield_stress() const
       {

@@ -104,6 +104,10 @@ namespace mpm {
       std::string traction;         // muparser of x, X and t
       std::vector<dealii::types::boundary_id> traction_boundary_ids;
 
+      /// Locking remedies of this body (doc/theory.md).
+      bool assumed_stress_filter = false;
+      bool compliance_metric     = false;
+
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void

@@ -108,6 +108,8 @@ namespace mpm {
     void
     update_stress(const double dt);
     void
+    filter_stress();
+    void
     update_positions();
 
     // Set-up pieces.
@@ -172,6 +174,8 @@ namespace mpm {
     double                               next_output_time = 0;
     unsigned int last_output_step = dealii::numbers::invalid_unsigned_int;
     unsigned int n_global_sorts   = 0;
+    bool         any_filter       = false;
+    unsigned int n_filter_fallbacks = 0; ///< local, cells with constant fallback
     double       wall_start = 0, last_progress = 0;
   };
 } // namespace mpm
