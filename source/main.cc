@@ -11,7 +11,8 @@
 #include <iostream>
 #include <string>
 
-namespace {
+namespace
+{
   const char *usage =
     "Usage: mpm [options] FILE.prm\n"
     "       mpirun -np N mpm FILE.prm\n"

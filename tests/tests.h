@@ -16,7 +16,8 @@
 #include <memory>
 #include <string>
 
-namespace mpm_test {
+namespace mpm_test
+{
   /// A simulator built from parameter-file text (all entries declared).
   template <int dim>
   struct Case

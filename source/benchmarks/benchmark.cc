@@ -8,11 +8,14 @@
 
 #include <cmath>
 
-namespace mpm {
-  namespace benchmarks {
+namespace mpm
+{
+  namespace benchmarks
+  {
     using namespace dealii;
 
-    namespace {
+    namespace
+    {
       double
       constant(const std::map<std::string, double> &c,
                const std::string                   &name,

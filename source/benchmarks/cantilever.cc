@@ -3,8 +3,10 @@
 #include <mpm/benchmarks/cantilever.h>
 #include <mpm/particles/particle_layout.h>
 
-namespace mpm {
-  namespace benchmarks {
+namespace mpm
+{
+  namespace benchmarks
+  {
     using namespace dealii;
 
     template <int dim>

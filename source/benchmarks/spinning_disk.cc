@@ -6,8 +6,10 @@
 
 #include <cmath>
 
-namespace mpm {
-  namespace benchmarks {
+namespace mpm
+{
+  namespace benchmarks
+  {
     using namespace dealii;
 
     template <int dim>

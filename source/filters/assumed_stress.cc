@@ -4,11 +4,14 @@
 
 #include <Eigen/Dense>
 
-namespace mpm {
-  namespace filters {
+namespace mpm
+{
+  namespace filters
+  {
     using namespace dealii;
 
-    namespace {
+    namespace
+    {
       /// Voigt order: 2D xx yy xy; 3D xx yy zz yz xz xy.
       template <int dim>
       constexpr unsigned int voigt_i[dim == 2 ? 3 : 6] = {};
@@ -43,6 +46,7 @@ namespace mpm {
       // The scale of J0 only rescales beta; normalising keeps H well
       // conditioned whatever the cell size.
       const Tensor<2, dim> J = J0 / J0.norm();
+      double               W[n_voigt][n_voigt];
       for (unsigned int a = 0; a < n_voigt; ++a)
         {
           Tensor<2, dim> E; // natural unit stress a
@@ -66,42 +70,61 @@ namespace mpm {
                           [voigt_j<dim>[b]];
             W[a][b] = ma * mb * A;
           }
+      for (unsigned int a = 0; a < n_voigt; ++a)
+        for (unsigned int b = 0; b < n_voigt; ++b)
+          {
+            TW[a][b] = 0;
+            for (unsigned int c = 0; c < n_voigt; ++c)
+              TW[a][b] += transform[c][a] * W[c][b];
+          }
+      for (unsigned int a = 0; a < n_voigt; ++a)
+        for (unsigned int b = 0; b < n_voigt; ++b)
+          {
+            TWT[a][b] = 0;
+            for (unsigned int c = 0; c < n_voigt; ++c)
+              TWT[a][b] += TW[a][c] * transform[c][b];
+          }
     }
 
     template <int dim>
     void
-    AssumedStressProjection<dim>::basis(const Point<dim> &xi, double *S) const
+    AssumedStressProjection<dim>::natural_basis(
+      const Point<dim> &xi,
+      unsigned int (&n)[n_voigt],
+      unsigned int (&col)[n_voigt][4],
+      double (&val)[n_voigt][4]) const
     {
       // natural coordinates in [-1, 1]
       double r[dim];
       for (unsigned int d = 0; d < dim; ++d)
         r[d] = 2 * xi[d] - 1;
-      double P[n_voigt][n_beta] = {};
+      auto set = [&](const unsigned int a,
+                     std::initializer_list<std::pair<unsigned int, double>> t) {
+        n[a] = 0;
+        for (const auto &[k, v] : t)
+          {
+            col[a][n[a]] = k;
+            val[a][n[a]] = v;
+            ++n[a];
+          }
+      };
       if constexpr (dim == 2)
         {
           // Pian-Sumihara: ss = b1 + b4 t, tt = b2 + b5 s, st = b3
-          P[0][0] = 1, P[0][3] = r[1];
-          P[1][1] = 1, P[1][4] = r[0];
-          P[2][2] = 1;
+          set(0, {{0, 1.}, {3, r[1]}});
+          set(1, {{1, 1.}, {4, r[0]}});
+          set(2, {{2, 1.}});
         }
       else
         {
           // 18-beta hexahedral field
-          P[0][0] = 1, P[0][1] = r[1], P[0][2] = r[2], P[0][3] = r[1] * r[2];
-          P[1][4] = 1, P[1][5] = r[0], P[1][6] = r[2], P[1][7] = r[0] * r[2];
-          P[2][8] = 1, P[2][9] = r[0], P[2][10] = r[1], P[2][11] = r[0] * r[1];
-          P[3][12] = 1, P[3][13] = r[0];
-          P[4][14] = 1, P[4][15] = r[1];
-          P[5][16] = 1, P[5][17] = r[2];
+          set(0, {{0, 1.}, {1, r[1]}, {2, r[2]}, {3, r[1] * r[2]}});
+          set(1, {{4, 1.}, {5, r[0]}, {6, r[2]}, {7, r[0] * r[2]}});
+          set(2, {{8, 1.}, {9, r[0]}, {10, r[1]}, {11, r[0] * r[1]}});
+          set(3, {{12, 1.}, {13, r[0]}});
+          set(4, {{14, 1.}, {15, r[1]}});
+          set(5, {{16, 1.}, {17, r[2]}});
         }
-      for (unsigned int a = 0; a < n_voigt; ++a)
-        for (unsigned int k = 0; k < n_beta; ++k)
-          {
-            double s = 0;
-            for (unsigned int b = 0; b < n_voigt; ++b)
-              s += transform[a][b] * P[b][k];
-            S[a * n_beta + k] = s;
-          }
     }
 
     template <int dim>
@@ -109,14 +132,22 @@ namespace mpm {
     AssumedStressProjection<dim>::field(const Point<dim> &xi,
                                         const double     *beta) const
     {
-      double S[n_voigt * n_beta];
-      basis(xi, S);
+      unsigned int n[n_voigt], col[n_voigt][4];
+      double       val[n_voigt][4];
+      natural_basis(xi, n, col, val);
+      double natural[n_voigt];
+      for (unsigned int a = 0; a < n_voigt; ++a)
+        {
+          natural[a] = 0;
+          for (unsigned int t = 0; t < n[a]; ++t)
+            natural[a] += val[a][t] * beta[col[a][t]];
+        }
       SymmetricTensor<2, dim> sigma;
       for (unsigned int a = 0; a < n_voigt; ++a)
         {
           double s = 0;
-          for (unsigned int k = 0; k < n_beta; ++k)
-            s += S[a * n_beta + k] * beta[k];
+          for (unsigned int b = 0; b < n_voigt; ++b)
+            s += transform[a][b] * natural[b];
           sigma[voigt_i<dim>[a]][voigt_j<dim>[a]] = s;
         }
       return sigma;
@@ -132,37 +163,34 @@ namespace mpm {
       Matrix H     = Matrix::Zero();
       Vector R     = Vector::Zero();
       double total = 0;
-      double S[n_voigt * n_beta];
+      unsigned int n[n_voigt], col[n_voigt][4];
+      double       val[n_voigt][4];
       for (const auto &p : samples)
         {
           if (!(p.weight > 0))
             continue;
           total += p.weight;
-          basis(p.xi, S);
-          double sv[n_voigt];
-          for (unsigned int a = 0; a < n_voigt; ++a)
-            sv[a] = p.stress[voigt_i<dim>[a]][voigt_j<dim>[a]];
-          // WS = W S (n_voigt x n_beta), W sigma
-          double WS[n_voigt][n_beta] = {}, Ws[n_voigt] = {};
+          natural_basis(p.xi, n, col, val);
+          // T^T W sigma: the stress seen from the natural components
+          double v[n_voigt] = {};
           for (unsigned int a = 0; a < n_voigt; ++a)
             for (unsigned int b = 0; b < n_voigt; ++b)
+              v[a] += TW[a][b] * p.stress[voigt_i<dim>[b]][voigt_j<dim>[b]];
+          // R += w P^T v, H += w P^T (T^T W T) P over the few nonzeros
+          for (unsigned int a = 0; a < n_voigt; ++a)
+            for (unsigned int t = 0; t < n[a]; ++t)
               {
-                Ws[a] += W[a][b] * sv[b];
-                for (unsigned int k = 0; k < n_beta; ++k)
-                  WS[a][k] += W[a][b] * S[b * n_beta + k];
+                const double pa = p.weight * val[a][t];
+                R(col[a][t]) += pa * v[a];
+                for (unsigned int b = 0; b < n_voigt; ++b)
+                  {
+                    const double m = pa * TWT[a][b];
+                    if (m == 0.)
+                      continue;
+                    for (unsigned int u = 0; u < n[b]; ++u)
+                      H(col[a][t], col[b][u]) += m * val[b][u];
+                  }
               }
-          for (unsigned int k = 0; k < n_beta; ++k)
-            {
-              for (unsigned int a = 0; a < n_voigt; ++a)
-                R(k) += p.weight * S[a * n_beta + k] * Ws[a];
-              for (unsigned int l = 0; l < n_beta; ++l)
-                {
-                  double h = 0;
-                  for (unsigned int a = 0; a < n_voigt; ++a)
-                    h += S[a * n_beta + k] * WS[a][l];
-                  H(k, l) += p.weight * h;
-                }
-            }
         }
       if (!(total > 0))
         return Result::unchanged;

@@ -6,8 +6,10 @@
 
 #include <memory>
 
-namespace mpm {
-  namespace filters {
+namespace mpm
+{
+  namespace filters
+  {
     using namespace dealii;
 
     template <int dim>

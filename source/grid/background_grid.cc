@@ -11,7 +11,8 @@
 #include <mpm/grid/mesh_reader.h>
 #include <mpm/utilities/input_error.h>
 
-namespace mpm {
+namespace mpm
+{
   using namespace dealii;
 
   template <int dim>

@@ -2,7 +2,8 @@
 
 #include <mpm/grid/box_mesh.h>
 
-namespace mpm {
+namespace mpm
+{
   template <int dim>
   void
   create_box_mesh(dealii::Triangulation<dim>      &tria,

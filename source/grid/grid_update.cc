@@ -6,10 +6,12 @@
 #include <cmath>
 #include <sstream>
 
-namespace mpm {
+namespace mpm
+{
   using namespace dealii;
 
-  namespace {
+  namespace
+  {
     template <int dim>
     std::string
     describe_node(const BackgroundGrid<dim> &grid,

@@ -6,7 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-namespace mpm {
+namespace mpm
+{
   template <int dim>
   void
   read_mesh(dealii::Triangulation<dim> &tria,

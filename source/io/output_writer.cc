@@ -12,7 +12,8 @@
 #include <iomanip>
 #include <sstream>
 
-namespace mpm {
+namespace mpm
+{
   using namespace dealii;
 
   void

@@ -6,7 +6,8 @@
 #include <iomanip>
 #include <limits>
 
-namespace mpm {
+namespace mpm
+{
   using namespace dealii;
 
   template <int dim>

@@ -5,9 +5,12 @@
 #include <cmath>
 #include <sstream>
 
-namespace mpm {
-  namespace materials {
-    namespace elasticity {
+namespace mpm
+{
+  namespace materials
+  {
+    namespace elasticity
+    {
       using dealii::SymmetricTensor;
       using dealii::Tensor;
 

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace mpm {
-  namespace materials {
+namespace mpm
+{
+  namespace materials
+  {
     void
     LinearElastic::declare_parameters(dealii::ParameterHandler &prm)
     {

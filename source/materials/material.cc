@@ -8,7 +8,8 @@
 #include <map>
 #include <stdexcept>
 
-namespace mpm {
+namespace mpm
+{
   std::string
   to_string(const KinematicAssumption k)
   {
@@ -28,8 +29,10 @@ namespace mpm {
     return "unknown";
   }
 
-  namespace materials {
-    namespace {
+  namespace materials
+  {
+    namespace
+    {
       // A function-local static is constructed on first use, so
       // registrations from other translation units work whatever the order
       // of static initialisation. Keyed by name, which keeps it sorted.

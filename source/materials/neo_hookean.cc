@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <cmath>
 
-namespace mpm {
-  namespace materials {
-    namespace {
+namespace mpm
+{
+  namespace materials
+  {
+    namespace
+    {
       double
       jacobian(const Tensor<2, 3> &F)
       {

@@ -4,9 +4,12 @@
 
 #include <cmath>
 
-namespace mpm {
-  namespace materials {
-    namespace {
+namespace mpm
+{
+  namespace materials
+  {
+    namespace
+    {
       double
       jacobian(const Tensor<2, 3> &F)
       {

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace mpm {
-  namespace materials {
+namespace mpm
+{
+  namespace materials
+  {
     void
     VonMisesPlasticity::declare_parameters(dealii::ParameterHandler &prm)
     {

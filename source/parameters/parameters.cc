@@ -10,11 +10,14 @@
 #include <fstream>
 #include <sstream>
 
-namespace mpm {
-  namespace Parameters {
+namespace mpm
+{
+  namespace Parameters
+  {
     using namespace dealii;
 
-    namespace {
+    namespace
+    {
       /// "0; 0" for vector-valued expressions
       std::string
       default_expression(const int dim)
@@ -477,7 +480,8 @@ namespace mpm {
                         "Number of `Body i` subsections (i = 0, 1, ...).");
     }
 
-    namespace {
+    namespace
+    {
       /// One line of a parameter file after `include` expansion, with
       /// where it came from.
       struct SourceLine

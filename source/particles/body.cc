@@ -7,7 +7,8 @@
 #include <mpm/shape_functions/q1_cell.h>
 #include <mpm/utilities/input_error.h>
 
-namespace mpm {
+namespace mpm
+{
   using namespace dealii;
 
   std::string

@@ -1,7 +1,9 @@
 #include <mpm/particles/particle_layout.h>
 
-namespace mpm {
-  namespace {
+namespace mpm
+{
+  namespace
+  {
     const char *axis[3]  = {"x", "y", "z"};
     const char *voigt[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
   } // namespace

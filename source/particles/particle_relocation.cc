@@ -7,10 +7,12 @@
 #include <map>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   using namespace dealii;
 
-  namespace {
+  namespace
+  {
     template <int dim>
     using CellIterator = typename Triangulation<dim>::active_cell_iterator;
 

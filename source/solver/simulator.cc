@@ -14,10 +14,12 @@
 #include <iomanip>
 #include <sstream>
 
-namespace mpm {
+namespace mpm
+{
   using namespace dealii;
 
-  namespace {
+  namespace
+  {
     double
     wall_seconds()
     {

@@ -6,7 +6,8 @@
 #include <cmath>
 #include <sstream>
 
-namespace mpm {
+namespace mpm
+{
   using namespace dealii;
 
   template <int dim>

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <sstream>
 
-namespace mpm {
-  namespace transfer {
+namespace mpm
+{
+  namespace transfer
+  {
     using namespace dealii;
 
     template <int dim>

@@ -2,8 +2,10 @@
 #include <mpm/particles/particle_layout.h>
 #include <mpm/transfer/particle_to_grid.h>
 
-namespace mpm {
-  namespace transfer {
+namespace mpm
+{
+  namespace transfer
+  {
     using namespace dealii;
 
     template <int dim>

@@ -8,8 +8,10 @@
 
 #include <muParser.h>
 
-namespace mpm {
-  namespace {
+namespace mpm
+{
+  namespace
+  {
     /// Identifiers used in an expression (names of variables, constants
     /// and functions alike).
     std::set<std::string>

@@ -7,8 +7,10 @@
 
 #include <muParser.h>
 
-namespace mpm {
-  namespace {
+namespace mpm
+{
+  namespace
+  {
     const std::map<std::string, double> *current_constants = nullptr;
   }
 

@@ -15,7 +15,8 @@
 //    problems).
 #include "../tests.h"
 
-namespace {
+namespace
+{
   const std::string disk = "include " SOURCE_DIR R"(/../../prm/spinning_disk.prm
 subsection Grid
   set Subdivisions = 20

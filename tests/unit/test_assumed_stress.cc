@@ -16,7 +16,8 @@
 using namespace dealii;
 using namespace mpm::filters;
 
-namespace {
+namespace
+{
   template <int dim>
   mpm::shape_functions::Q1Cell<dim>
   distorted_cell(const unsigned int seed)

@@ -28,7 +28,8 @@ using dealii::ArrayView;
 using dealii::SymmetricTensor;
 using dealii::Tensor;
 
-namespace {
+namespace
+{
   using Parameters = std::map<std::string, std::string>;
 
   /// A model of type T with the given parameters (others at defaults).

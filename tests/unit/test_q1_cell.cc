@@ -15,7 +15,8 @@
 using namespace dealii;
 using mpm::shape_functions::Q1Cell;
 
-namespace {
+namespace
+{
   template <int dim>
   Q1Cell<dim>
   make_cell(const bool distorted, const unsigned int seed)

@@ -8,8 +8,10 @@
 #include <string>
 #include <vector>
 
-namespace mpm {
-  namespace benchmarks {
+namespace mpm
+{
+  namespace benchmarks
+  {
     /**
      * A benchmark with an exact solution adds error columns to the
      * statistics file. Its parameters come from the parameter file's

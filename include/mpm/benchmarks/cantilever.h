@@ -2,8 +2,10 @@
 
 #include <mpm/benchmarks/benchmark.h>
 
-namespace mpm {
-  namespace benchmarks {
+namespace mpm
+{
+  namespace benchmarks
+  {
     /**
      * BENCHMARKS.md section 2: vibrating cantilever of length L and depth H
      * (constants L, H), clamped at x = 0. Column: the vertical displacement

@@ -2,8 +2,10 @@
 
 #include <mpm/benchmarks/benchmark.h>
 
-namespace mpm {
-  namespace benchmarks {
+namespace mpm
+{
+  namespace benchmarks
+  {
     /**
      * BENCHMARKS.md section 3: a plane-stress disk of radius a spinning at
      * omega about the origin in its steady state. Columns: mass-weighted

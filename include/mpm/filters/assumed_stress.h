@@ -6,8 +6,10 @@
 
 #include <vector>
 
-namespace mpm {
-  namespace filters {
+namespace mpm
+{
+  namespace filters
+  {
     /// One particle's part in a cell's stress projection.
     template <int dim>
     struct StressSample
@@ -72,14 +74,20 @@ namespace mpm {
       field(const dealii::Point<dim> &xi, const double *beta) const;
 
     private:
-      /// Row-major n_voigt x n_beta matrix S(xi), Cartesian components.
+      /// The natural field Sigma(xi) = P(xi) beta is sparse: each natural
+      /// component a has at most 4 terms (column k, value). Fills them and
+      /// returns their counts per component.
       void
-      basis(const dealii::Point<dim> &xi, double *S) const;
+      natural_basis(const dealii::Point<dim> &xi,
+                    unsigned int (&n_terms)[n_voigt],
+                    unsigned int (&column)[n_voigt][4],
+                    double (&value)[n_voigt][4]) const;
 
-      /// Cartesian Voigt components of natural unit stresses (columns).
+      /// Cartesian Voigt components of natural unit stresses (columns): T.
       double transform[n_voigt][n_voigt];
-      /// Metric in Voigt form.
-      double W[n_voigt][n_voigt];
+      /// T^T W T and T^T W: the metric seen from the natural components.
+      double TWT[n_voigt][n_voigt];
+      double TW[n_voigt][n_voigt];
     };
 
     /// Isotropic linear elastic compliance of the in-plane stresses: plane

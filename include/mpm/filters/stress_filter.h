@@ -7,8 +7,10 @@
 
 #include <vector>
 
-namespace mpm {
-  namespace filters {
+namespace mpm
+{
+  namespace filters
+  {
     /**
      * The filter phase of the step: for every owned cell and every body
      * with `Stress filter = assumed stress`, the in-plane stresses of that

@@ -14,7 +14,8 @@
 #include <memory>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   using NodalVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
   /**

@@ -5,7 +5,8 @@
 
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * A box with the given cells per direction, built as the coarsest
    * subdivided box that global refinement turns into it: 384 x 384 becomes

@@ -4,7 +4,8 @@
 
 #include <string>
 
-namespace mpm {
+namespace mpm
+{
   /// Components per node of the kinematics vector: velocity at the end of
   /// the step, and its increment over the step (for FLIP).
   template <int dim>

@@ -4,7 +4,8 @@
 
 #include <string>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * Read a Gmsh (.msh) or UCD (.inp, .ucd) mesh into @p tria. A relative
    * @p file_name is looked up next to the parameter file (@p input_folder)

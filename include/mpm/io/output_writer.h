@@ -9,7 +9,8 @@
 #include <utility>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * Writes what ParaView and scripts read: particles-NNNNN.pvtu and
    * grid-NNNNN.pvtu with particles.pvd / grid.pvd time series, and the

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /// Global sums over all particles, for the statistics file and tests.
   template <int dim>
   struct GlobalStatistics

@@ -6,14 +6,17 @@
 
 #include <mpm/materials/material.h>
 
-namespace mpm {
-  namespace materials {
+namespace mpm
+{
+  namespace materials
+  {
     /**
      * Building blocks shared by the isotropic (hypo)elastic models: elastic
      * constants, the elastic law for every kinematic assumption, the
      * complementary energy and the Hughes-Winget objective update.
      */
-    namespace elasticity {
+    namespace elasticity
+    {
       /// Isotropic elastic constants, stored as Young's modulus and
       /// Poisson's ratio (the parameters the user gives).
       struct IsotropicConstants

@@ -3,8 +3,10 @@
 #include <mpm/materials/elasticity.h>
 #include <mpm/materials/material.h>
 
-namespace mpm {
-  namespace materials {
+namespace mpm
+{
+  namespace materials
+  {
     /**
      * Isotropic hypoelastic material: the Jaumann rate of the Cauchy stress
      * is C : D, integrated with the incrementally objective Hughes-Winget

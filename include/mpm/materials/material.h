@@ -10,7 +10,8 @@
 #include <string>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * How a model of dimension 1 or 2 is embedded in three-dimensional
    * continuum mechanics. Materials always see 3x3 tensors; this tells them
@@ -28,7 +29,8 @@ namespace mpm {
   std::string
   to_string(const KinematicAssumption k);
 
-  namespace materials {
+  namespace materials
+  {
     using dealii::ArrayView;
     using dealii::SymmetricTensor;
     using dealii::Tensor;
@@ -181,7 +183,8 @@ namespace mpm {
 } // namespace mpm
 
 #define MPM_REGISTER_MATERIAL(classname, model_name, model_description)    \
-  namespace {                                                              \
+  namespace                                                                \
+  {                                                                        \
     const bool registered_##classname = mpm::materials::register_material( \
       {model_name,                                                         \
        model_description,                                                  \

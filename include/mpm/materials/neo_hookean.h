@@ -3,8 +3,10 @@
 #include <mpm/materials/elasticity.h>
 #include <mpm/materials/material.h>
 
-namespace mpm {
-  namespace materials {
+namespace mpm
+{
+  namespace materials
+  {
     /**
      * Compressible neo-Hookean hyperelastic material,
      * psi = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, with

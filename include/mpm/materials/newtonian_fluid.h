@@ -2,8 +2,10 @@
 
 #include <mpm/materials/material.h>
 
-namespace mpm {
-  namespace materials {
+namespace mpm
+{
+  namespace materials
+  {
     /**
      * Compressible Newtonian fluid, sigma = -p(J) I + 2 mu dev(D), with
      * D = sym(L) and the pressure from a barotropic equation of state:

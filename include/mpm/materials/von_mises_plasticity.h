@@ -3,8 +3,10 @@
 #include <mpm/materials/elasticity.h>
 #include <mpm/materials/material.h>
 
-namespace mpm {
-  namespace materials {
+namespace mpm
+{
+  namespace materials
+  {
     /**
      * Hypoelastic-plastic material with a von Mises yield surface and
      * linear isotropic hardening. Each step rotates the stress with the

@@ -15,8 +15,10 @@
  * entries (with documentation and defaults) and reads them back; the
  * user guide in doc/parameters.md follows the same order.
  */
-namespace mpm {
-  namespace Parameters {
+namespace mpm
+{
+  namespace Parameters
+  {
     /// Background grid: a subdivided box or a mesh file.
     template <int dim>
     struct Grid

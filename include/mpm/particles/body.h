@@ -12,7 +12,8 @@
 #include <string>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * A body at run time: its material and the expressions for its initial
    * state and loads. Loads are functions of the current position x, the

@@ -4,7 +4,8 @@
 
 #include <mpm/grid/background_grid.h>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * The hot loops' skeleton: visit every locally owned cell that holds
    * particles, calling f(cell, particles_in_cell). Walking particles cell

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * Where each particle quantity lives in the property array that
    * Particles::ParticleHandler stores per particle. The offsets are

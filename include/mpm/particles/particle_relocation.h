@@ -4,7 +4,8 @@
 
 #include <mpm/grid/background_grid.h>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * Keeps particles sorted into cells after their positions changed,
    * without deal.II's global re-sort: each particle's reference coordinates

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <limits>
 
-namespace mpm {
-  namespace shape_functions {
+namespace mpm
+{
+  namespace shape_functions
+  {
     using dealii::Point;
     using dealii::Tensor;
 

@@ -18,7 +18,8 @@
 #include <string>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * The explicit MPM solver. setup() builds everything from the parameters
    * and checks it (every problem is an InputError, raised before anything
@@ -175,7 +176,8 @@ namespace mpm {
     unsigned int last_output_step = dealii::numbers::invalid_unsigned_int;
     unsigned int n_global_sorts   = 0;
     bool         any_filter       = false;
-    unsigned int n_filter_fallbacks = 0; ///< local, cells with constant fallback
-    double       wall_start = 0, last_progress = 0;
+    unsigned int n_filter_fallbacks =
+      0; ///< local, cells with constant fallback
+    double wall_start = 0, last_progress = 0;
   };
 } // namespace mpm

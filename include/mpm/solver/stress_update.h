@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /// What the stress update learns about the state on the way.
   struct StressUpdateResult
   {

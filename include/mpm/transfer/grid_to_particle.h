@@ -6,8 +6,10 @@
 
 #include <string>
 
-namespace mpm {
-  namespace transfer {
+namespace mpm
+{
+  namespace transfer
+  {
     /**
      * Grid to particle: with v_i the nodal velocity at the end of the step
      * and dv_i its increment (KinematicsLayout),

@@ -7,8 +7,10 @@
 
 #include <vector>
 
-namespace mpm {
-  namespace transfer {
+namespace mpm
+{
+  namespace transfer
+  {
     /// What a particle-to-grid pass accumulates.
     enum class P2GContent
     {

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * A vector-valued muparser expression (muparser used directly: deal.II's
    * FunctionParser exists only for 1 to 3 variables, loads need 2*dim+1) of

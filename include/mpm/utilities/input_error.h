@@ -3,7 +3,8 @@
 #include <stdexcept>
 #include <string>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * An error the user can fix: bad input, an unstable setting, a particle
    * that left the grid. main() prints its message and exits with status 1;

@@ -7,7 +7,8 @@
 #include <memory>
 #include <string>
 
-namespace mpm {
+namespace mpm
+{
   /**
    * A parameter that is a number or an expression of the parameter file's
    * named `Constants`, e.g. `set Young's modulus = E` or `= 2*rho`. So a
