@@ -111,9 +111,12 @@ namespace mpm
       if constexpr (dim == 2)
         {
           // Pian-Sumihara: ss = b1 + b4 t, tt = b2 + b5 s, st = b3
-          set(0, {{0, 1.}, {3, r[1]}});
-          set(1, {{1, 1.}, {4, r[0]}});
-          set(2, {{2, 1.}});
+          (void)set;
+          n[0] = 2, col[0][0] = 0, val[0][0] = 1., col[0][1] = 3,
+          val[0][1] = r[1];
+          n[1] = 2, col[1][0] = 1, val[1][0] = 1., col[1][1] = 4,
+          val[1][1] = r[0];
+          n[2] = 1, col[2][0] = 2, val[2][0] = 1.;
         }
       else
         {
