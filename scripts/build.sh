@@ -4,6 +4,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" > "$root/build-configure.log" \
-  || { cat "$root/build-configure.log"; exit 1; }
+mkdir -p "$root/build"
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" > "$root/build/configure.log" \
+  || { cat "$root/build/configure.log"; exit 1; }
 cmake --build "$root/build" -j2 ${1:+--target "$@"}

@@ -630,14 +630,29 @@ namespace mpm
           << " steps = " << updates / std::max(loop_seconds, 1e-300) / 1e6
           << " M particle-updates/s" << std::endl;
 
-    if (!out.test_summary.empty() &&
-        Utilities::MPI::this_mpi_process(comm) == 0)
+    if (!out.test_summary.empty())
       {
-        std::ostringstream s;
-        for (const auto &r : summary_rows)
-          s << r << '\n';
-        write_file_atomically(out.test_summary, s.str());
+        // Written by rank 0; a failure stops every rank (collective check).
+        std::string problem;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          try
+            {
+              std::ostringstream s;
+              for (const auto &r : summary_rows)
+                s << r << '\n';
+              write_file_atomically(out.test_summary, s.str());
+            }
+          catch (const std::exception &e)
+            {
+              problem = e.what();
+            }
+        throw_if_any<RuntimeError>("while writing Output/Test summary file: ",
+                                   problem);
       }
+    if (any_filter)
+      pcout << "  stress filter: "
+            << Utilities::MPI::sum(n_filter_fallbacks, comm)
+            << " cell projections fell back to constant stress" << std::endl;
     print_memory();
     timer.print_summary();
   }
