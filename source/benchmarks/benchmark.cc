@@ -2,6 +2,7 @@
 
 #include <mpm/benchmarks/benchmark.h>
 #include <mpm/benchmarks/cantilever.h>
+#include <mpm/benchmarks/self_weight_column.h>
 #include <mpm/benchmarks/spinning_disk.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/utilities/input_error.h>
@@ -120,9 +121,23 @@ namespace mpm
           else
             throw InputError("Benchmark = cantilever needs Dimension 2 or 3");
         }
+      if (name == "self-weight column")
+        {
+          if constexpr (dim >= 2)
+            return std::make_unique<SelfWeightColumn<dim>>(
+              constant(constants, "H", name),
+              constant(constants, "W", name),
+              constant(constants, "rho", name),
+              constant(constants, "g", name),
+              constant(constants, "nu", name),
+              constant(constants, "h", name));
+          else
+            throw InputError(
+              "Benchmark = self-weight column needs Dimension 2 or 3");
+        }
       throw InputError("Benchmark = '" + name +
                        "' is unknown; known: none, axial bar, spinning disk, "
-                       "cantilever");
+                       "cantilever, self-weight column");
     }
 
     template std::unique_ptr<Benchmark<1>>

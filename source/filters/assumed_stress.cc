@@ -1,5 +1,6 @@
 #include <mpm/filters/assumed_stress.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -159,7 +160,8 @@ namespace mpm
     template <int dim>
     typename AssumedStressProjection<dim>::Result
     AssumedStressProjection<dim>::project(
-      std::vector<StressSample<dim>> &samples) const
+      std::vector<StressSample<dim>> &samples,
+      double                         *beta_out) const
     {
       using Matrix = Eigen::Matrix<double, n_beta, n_beta>;
       using Vector = Eigen::Matrix<double, n_beta, 1>;
@@ -237,6 +239,8 @@ namespace mpm
         }
       for (auto &p : samples)
         p.stress = field(p.xi, beta);
+      if (beta_out)
+        std::copy(beta, beta + n_beta, beta_out);
       return result;
     }
 

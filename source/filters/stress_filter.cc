@@ -4,6 +4,7 @@
 #include <mpm/particles/particle_layout.h>
 #include <mpm/utilities/input_error.h>
 
+#include <algorithm>
 #include <memory>
 
 namespace mpm
@@ -16,13 +17,14 @@ namespace mpm
     unsigned int
     apply_stress_filter(const BackgroundGrid<dim>       &grid,
                         Particles::ParticleHandler<dim> &particles,
-                        const std::vector<Body<dim>>    &bodies)
+                        const std::vector<Body<dim>>    &bodies,
+                        CellStressField<dim>            &field)
     {
       using L                 = ParticleLayout<dim>;
       unsigned int n_fallback = 0;
       if constexpr (dim == 1)
         {
-          (void)grid, (void)particles, (void)bodies;
+          (void)grid, (void)particles, (void)bodies, (void)field;
           return 0;
         }
       else
@@ -45,6 +47,7 @@ namespace mpm
                     KinematicAssumption::plane_stress);
             }
 
+          field.clear();
           Point<dim> centre;
           for (unsigned int d = 0; d < dim; ++d)
             centre[d] = 0.5;
@@ -90,9 +93,16 @@ namespace mpm
                       last_J0[b] = J0;
                     }
                   const auto &P = *projection[b];
-                  if (P.project(samples) !=
-                      AssumedStressProjection<dim>::Result::full)
+                  double      beta[AssumedStressProjection<dim>::n_beta];
+                  const auto  result = P.project(samples, beta);
+                  if (result != AssumedStressProjection<dim>::Result::full)
                     ++n_fallback;
+                  if (result ==
+                      AssumedStressProjection<dim>::Result::unchanged)
+                    continue;
+                  std::copy(beta,
+                            beta + AssumedStressProjection<dim>::n_beta,
+                            field.store(b, cell->active_cell_index()));
                   for (unsigned int k = 0; k < samples.size(); ++k)
                     {
                       SymmetricTensor<2, 3> sigma = load_stress(targets[k]);
@@ -110,14 +120,17 @@ namespace mpm
     template unsigned int
     apply_stress_filter<1>(const BackgroundGrid<1> &,
                            Particles::ParticleHandler<1> &,
-                           const std::vector<Body<1>> &);
+                           const std::vector<Body<1>> &,
+                           CellStressField<1> &);
     template unsigned int
     apply_stress_filter<2>(const BackgroundGrid<2> &,
                            Particles::ParticleHandler<2> &,
-                           const std::vector<Body<2>> &);
+                           const std::vector<Body<2>> &,
+                           CellStressField<2> &);
     template unsigned int
     apply_stress_filter<3>(const BackgroundGrid<3> &,
                            Particles::ParticleHandler<3> &,
-                           const std::vector<Body<3>> &);
+                           const std::vector<Body<3>> &,
+                           CellStressField<3> &);
   } // namespace filters
 } // namespace mpm

@@ -354,9 +354,11 @@ namespace mpm
         "Stress filter",
         "none",
         Patterns::Selection("none|assumed stress"),
-        "assumed stress: after every stress update, project the stresses of "
-        "this body's particles in each cell onto the Pian-Sumihara field of "
-        "the cell (5 parameters in 2D, 18 in 3D; doc/theory.md). 2D and 3D.");
+        "assumed stress: project the stresses of this body's particles in "
+        "each cell onto the Pian-Sumihara field of the cell (5 parameters "
+        "in 2D, 18 in 3D) where the next internal force is computed, and "
+        "integrate that field's force exactly over the particle domains "
+        "(doc/theory.md). 2D and 3D.");
       prm.declare_entry("Filter metric",
                         "mass",
                         Patterns::Selection("mass|compliance"),
@@ -364,6 +366,16 @@ namespace mpm
                         "weights m_p); compliance: the Hellinger-Reissner "
                         "projection (inner product C^-1, weights V_p), for "
                         "materials with elastic moduli.");
+      prm.declare_entry(
+        "Volumetric smoothing",
+        "none",
+        Patterns::Selection("none|cell|node"),
+        "The volumetric-locking remedy: the volume change that sets the "
+        "pressure is averaged, the deviatoric part stays the particle's. "
+        "cell: over this body's particles in the cell (the seed's "
+        "theta-bar; F-bar for models that use F); node: mass-weighted to "
+        "the grid nodes and interpolated back (averages of all node-smoothed "
+        "bodies mix at shared nodes).");
       prm.leave_subsection();
     }
 
@@ -392,6 +404,10 @@ namespace mpm
       prm.enter_subsection("Locking remedies");
       assumed_stress_filter = prm.get("Stress filter") == "assumed stress";
       compliance_metric     = prm.get("Filter metric") == "compliance";
+      const std::string vs  = prm.get("Volumetric smoothing");
+      volumetric_smoothing  = vs == "cell" ? filters::VolumetricSmoothing::cell :
+                              vs == "node" ? filters::VolumetricSmoothing::node :
+                                             filters::VolumetricSmoothing::none;
       prm.leave_subsection();
       if (assumed_stress_filter && dim == 1)
         throw InputError("Locking remedies/Stress filter = assumed stress "

@@ -59,10 +59,25 @@ namespace mpm
     background.setup(params.boundary);
     create_bodies();
     create_particles();
+    {
+      std::vector<char> filtered(bodies.size());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        filtered[b] = bodies[b].prm.assumed_stress_filter;
+      cell_stress.reinit(filtered,
+                         background.triangulation().n_active_cells());
+    }
+    // The first force integrates the filtered initial stress.
+    filter_stress();
     background.initialize_vector(p2g, transfer::P2GLayout<dim>::n_components);
     background.initialize_vector(kinematics,
                                  KinematicsLayout<dim>::n_components);
     background.initialize_vector(remap, dim);
+    for (const auto &body : bodies)
+      if (body.prm.volumetric_smoothing == filters::VolumetricSmoothing::node)
+        {
+          background.initialize_vector(volume_sums, 3);
+          break;
+        }
     benchmark =
       benchmarks::create_benchmark<dim>(params.benchmark, params.constants);
 
@@ -389,9 +404,12 @@ namespace mpm
         if (params.time.scheme == Scheme::musl)
           remap_momentum();
         update_stress(dt);
-        filter_stress();
       }
     update_positions();
+    // USL, MUSL: filter where the next force is computed, i.e. on the
+    // particles each cell holds after the move.
+    if (params.time.scheme != Scheme::usf)
+      filter_stress();
     current_time += dt;
     ++current_step;
     check_errors();
@@ -402,8 +420,13 @@ namespace mpm
   Simulator<dim>::particle_to_grid(const transfer::P2GContent content)
   {
     TimerOutput::Scope t(timer, "P2G");
-    transfer::particle_to_grid(
-      background, particle_handler, bodies, current_time, content, p2g);
+    transfer::particle_to_grid(background,
+                               particle_handler,
+                               bodies,
+                               current_time,
+                               content,
+                               p2g,
+                               any_filter ? &cell_stress : nullptr);
   }
 
   template <int dim>
@@ -450,8 +473,12 @@ namespace mpm
   Simulator<dim>::update_stress(const double dt)
   {
     TimerOutput::Scope t(timer, "stress update");
-    const auto         r = ::mpm::update_stress(
-      background, particle_handler, bodies, kinematics, dt);
+    const auto         r = ::mpm::update_stress(background,
+                                        particle_handler,
+                                        bodies,
+                                        kinematics,
+                                        dt,
+                                        &volume_sums);
     stable_dt = r.stable_time_step;
     if (local_error.empty())
       local_error = r.error;
@@ -465,7 +492,10 @@ namespace mpm
       return;
     TimerOutput::Scope t(timer, "stress filter");
     n_filter_fallbacks +=
-      filters::apply_stress_filter(background, particle_handler, bodies);
+      filters::apply_stress_filter(background,
+                                   particle_handler,
+                                   bodies,
+                                   cell_stress);
   }
 
   template <int dim>

@@ -1,12 +1,56 @@
+#include <mpm/filters/assumed_stress_force.h>
+#include <mpm/filters/assumed_stress.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/transfer/particle_to_grid.h>
+
+#include <memory>
 
 namespace mpm
 {
   namespace transfer
   {
     using namespace dealii;
+
+    namespace
+    {
+      /// The in-plane part of the stored Voigt stress.
+      template <int dim>
+      inline Tensor<2, dim>
+      in_plane_stress(const double *s)
+      {
+        Tensor<2, dim> sigma;
+        sigma[0][0] = s[0];
+        if constexpr (dim >= 2)
+          {
+            sigma[1][1] = s[1];
+            sigma[0][1] = sigma[1][0] = s[5];
+          }
+        if constexpr (dim == 3)
+          {
+            sigma[2][2] = s[2];
+            sigma[1][2] = sigma[2][1] = s[3];
+            sigma[0][2] = sigma[2][0] = s[4];
+          }
+        return sigma;
+      }
+
+      /// Half-vectors of the current particle domain, F r_i (columns).
+      template <int dim>
+      inline Tensor<2, dim>
+      current_domain(const double *prop)
+      {
+        using L = ParticleLayout<dim>;
+        Tensor<2, dim> F, R;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            {
+              F[i][j] = prop[L::F + i * dim + j];
+              R[i][j] = prop[L::domain + i * dim + j];
+            }
+        return F * R;
+      }
+    } // namespace
 
     template <int dim>
     void
@@ -15,7 +59,8 @@ namespace mpm
                      const std::vector<Body<dim>>    &bodies,
                      const double                     time,
                      const P2GContent                 content,
-                     NodalVector                     &nodal)
+                     NodalVector                     &nodal,
+                     const filters::CellStressField<dim> *filtered)
     {
       using L                              = ParticleLayout<dim>;
       constexpr unsigned int nv            = shape_functions::n_q1<dim>;
@@ -41,12 +86,28 @@ namespace mpm
         nodal = 0.;
       double *const out = nodal.begin();
 
+      // Filtered bodies: the force of their cell's assumed-stress field,
+      // integrated over the particle domains (AssumedStressForce).
+      constexpr bool has_filter = dim > 1;
+      constexpr int  fdim       = dim == 1 ? 2 : dim; // no filter in 1D
+      using Force      = filters::AssumedStressForce<fdim>;
+      using Projection = filters::AssumedStressProjection<fdim>;
+      std::vector<Force>          field_force(has_filter ? bodies.size() : 0);
+      std::vector<unsigned int>   force_bodies;
+      std::unique_ptr<Projection> evaluator;
+      Tensor<2, dim> evaluator_J0, J0_inverse;
+      Point<dim>     centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        centre[d] = 0.5;
+
       double         N[nv];
       Tensor<1, dim> G[nv];
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
           const auto         &geo   = grid.geometry(cell);
           const unsigned int *nodes = grid.nodes(cell);
+          const unsigned int  cell_index = cell->active_cell_index();
+          bool                J0_known   = false;
 
           // Accumulate per cell, then scatter once.
           double local[nv][1 + 2 * dim] = {};
@@ -62,24 +123,38 @@ namespace mpm
 
               if (do_force)
                 {
-                  // -V sigma grad N, with the in-plane part of the stress
-                  const double   V = prop[L::volume];
-                  const double  *s = prop + L::stress;
-                  Tensor<2, dim> sigma;
-                  sigma[0][0] = s[0];
-                  if constexpr (dim >= 2)
-                    {
-                      sigma[1][1] = s[1];
-                      sigma[0][1] = sigma[1][0] = s[5];
-                    }
-                  if constexpr (dim == 3)
-                    {
-                      sigma[2][2] = s[2];
-                      sigma[1][2] = sigma[2][1] = s[3];
-                      sigma[0][2] = sigma[2][0] = s[4];
-                    }
                   const unsigned int b =
                     static_cast<unsigned int>(prop[L::body]);
+                  const double V = prop[L::volume];
+
+                  // Stress: the particle's own (midpoint rule), or its
+                  // share of the cell's filtered field.
+                  bool by_field = false;
+                  if constexpr (has_filter)
+                    if (filtered && filtered->get(b, cell_index))
+                      {
+                        if (!J0_known)
+                          {
+                            const Tensor<2, dim> J0 = geo.jacobian(centre);
+                            J0_inverse              = invert(J0);
+                            J0_known                = true;
+                            if (!evaluator || !(J0 == evaluator_J0))
+                              {
+                                evaluator = std::make_unique<Projection>(
+                                  J0, filters::Metric::mass);
+                                evaluator_J0 = J0;
+                              }
+                          }
+                        if (field_force[b].empty())
+                          force_bodies.push_back(b);
+                        field_force[b].add_particle(
+                          xi, J0_inverse * current_domain<dim>(prop), V);
+                        by_field = true;
+                      }
+                  Tensor<2, dim> sigma;
+                  if (!by_field)
+                    sigma = -V * in_plane_stress<dim>(prop + L::stress);
+
                   double ext[dim] = {};
                   if (body_loaded[b])
                     {
@@ -102,7 +177,7 @@ namespace mpm
                     }
                   for (unsigned int v = 0; v < nv; ++v)
                     {
-                      const Tensor<1, dim> f = -V * (sigma * G[v]);
+                      const Tensor<1, dim> f = sigma * G[v];
                       for (unsigned int d = 0; d < dim; ++d)
                         local[v][1 + dim + d] += f[d] + N[v] * ext[d];
                     }
@@ -116,6 +191,21 @@ namespace mpm
                       local[v][1 + d] += w * prop[L::velocity + d];
                   }
             }
+
+          if constexpr (has_filter)
+            for (const unsigned int b : force_bodies)
+              {
+                double f[nv * dim] = {};
+                field_force[b].add_internal_force(geo,
+                                                  *evaluator,
+                                                  filtered->get(b, cell_index),
+                                                  f);
+                for (unsigned int v = 0; v < nv; ++v)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    local[v][1 + dim + d] += f[v * dim + d];
+                field_force[b].clear();
+              }
+          force_bodies.clear();
 
           for (unsigned int v = 0; v < nv; ++v)
             {
@@ -139,20 +229,23 @@ namespace mpm
                         const std::vector<Body<1>> &,
                         double,
                         P2GContent,
-                        NodalVector &);
+                        NodalVector &,
+                        const filters::CellStressField<1> *);
     template void
     particle_to_grid<2>(const BackgroundGrid<2> &,
                         Particles::ParticleHandler<2> &,
                         const std::vector<Body<2>> &,
                         double,
                         P2GContent,
-                        NodalVector &);
+                        NodalVector &,
+                        const filters::CellStressField<2> *);
     template void
     particle_to_grid<3>(const BackgroundGrid<3> &,
                         Particles::ParticleHandler<3> &,
                         const std::vector<Body<3>> &,
                         double,
                         P2GContent,
-                        NodalVector &);
+                        NodalVector &,
+                        const filters::CellStressField<3> *);
   } // namespace transfer
 } // namespace mpm

@@ -65,9 +65,11 @@ namespace mpm
                               const dealii::SymmetricTensor<4, dim> &
                                 compliance = dealii::SymmetricTensor<4, dim>());
 
-      /// Replace the samples' stresses by the projected field.
+      /// Replace the samples' stresses by the projected field; its
+      /// coefficients go to @p beta (n_beta values) if given.
       Result
-      project(std::vector<StressSample<dim>> &samples) const;
+      project(std::vector<StressSample<dim>> &samples,
+              double                         *beta = nullptr) const;
 
       /// The assumed-stress field at xi for coefficients beta (Cartesian).
       dealii::SymmetricTensor<2, dim>

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <mpm/filters/volumetric_smoothing.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
@@ -109,6 +111,8 @@ namespace mpm
       /// Locking remedies of this body (doc/theory.md).
       bool assumed_stress_filter = false;
       bool compliance_metric     = false;
+      filters::VolumetricSmoothing volumetric_smoothing =
+        filters::VolumetricSmoothing::none;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

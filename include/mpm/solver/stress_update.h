@@ -24,6 +24,11 @@ namespace mpm
    * @p kinematics (KinematicsLayout), F_p <- (I + dt L_p) F_p,
    * V_p = det(F_p) V0_p, and the material's stress update. Also measures
    * the stable time step of the new state.
+   *
+   * Bodies with Volumetric smoothing hand their material a smoothed
+   * volume change (filters::smooth_volume_change): averaged over the
+   * body's particles in the cell, or through the nodes, for which
+   * @p volume_scratch (3 components per node) must be given.
    */
   template <int dim>
   StressUpdateResult
@@ -31,7 +36,8 @@ namespace mpm
                 dealii::Particles::ParticleHandler<dim> &particles,
                 const std::vector<Body<dim>>            &bodies,
                 const NodalVector                       &kinematics,
-                const double                             dt);
+                const double                             dt,
+                NodalVector *volume_scratch = nullptr);
 
   /// The stability limit of the current state (no update).
   template <int dim>

@@ -2,6 +2,7 @@
 
 #include <deal.II/particles/particle_handler.h>
 
+#include <mpm/filters/cell_stress_field.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/particles/body.h>
 
@@ -37,6 +38,11 @@ namespace mpm
      * Walks the particles cell by cell with Q1 values computed directly,
      * adds into the ghosted vector @p nodal (packed with P2GLayout, or
      * with dim components for P2GContent::momentum) and compresses it.
+     *
+     * Particles of a body that @p filtered holds a field for in their
+     * cell contribute their domain instead of their own stress to the
+     * internal force: the cell's assumed-stress field is integrated
+     * exactly over the particle domains (filters::AssumedStressForce).
      */
     template <int dim>
     void
@@ -45,6 +51,7 @@ namespace mpm
                      const std::vector<Body<dim>>            &bodies,
                      const double                             time,
                      const P2GContent                         content,
-                     NodalVector                             &nodal);
+                     NodalVector                             &nodal,
+                     const filters::CellStressField<dim> *filtered = nullptr);
   } // namespace transfer
 } // namespace mpm

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Self-weight column (BENCHMARKS.md section 5): every variant for
+# nu = 0.3, 0.49, 0.499 and h = 1, 0.5, 0.25. Writes OUT/table.txt (the
+# errors at t = 3 s, divided by rho g H) and keeps each run's output in
+# OUT/<nu>_<h>_<variant>/ for scripts/plot_column.py.
+# Usage: scripts/column_study.sh [OUT] [h values...]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=$(realpath -m "${1:-results/column}")
+shift || true
+hs=${*:-1 0.5 0.25}
+mkdir -p "$out"
+table="$out/table.txt"
+echo "nu h variant sigma_yy_error pressure_error checkerboard" > "$table"
+for nu in 0.3 0.49 0.499; do
+  for h in $hs; do
+    nx=$(python3 -c "print(round(1/$h))")
+    for variant in standard theta-bar node-average filter filter+theta-bar; do
+      filter=none; smoothing=none
+      case $variant in
+        theta-bar) smoothing=cell ;;
+        node-average) smoothing=node ;;
+        filter) filter="assumed stress" ;;
+        filter+theta-bar) filter="assumed stress"; smoothing=cell ;;
+      esac
+      dir="$out/${nu}_${h}_${variant}"
+      cat > "$out/case.prm" <<PRM
+include $root/prm/self_weight_column.prm
+set Constants = H=10, W=1, E=1e6, nu=$nu, rho=80, g=10, h=$h, tr=1
+subsection Grid
+  set Subdivisions = $nx, $(python3 -c "print(round(11/$h))")
+end
+subsection Output
+  set Directory = $dir
+  set Interval = 0.5
+end
+subsection Bodies
+  subsection Body 0
+    set Subdivisions = $nx, $(python3 -c "print(round(10/$h))")
+    subsection Locking remedies
+      set Stress filter = $filter
+      set Filter metric = compliance
+      set Volumetric smoothing = $smoothing
+    end
+  end
+end
+PRM
+      rm -rf "$dir"
+      "$root/build/mpm" "$out/case.prm" > "$out/log.txt"
+      echo "$nu $h $variant $(tail -1 "$dir/statistics.txt" | awk '{print $(NF-2), $(NF-1), $NF}')" | tee -a "$table"
+    done
+  done
+done
