@@ -26,7 +26,7 @@ for nu in 0.3 0.49 0.499; do
       dir="$out/${nu}_${h}_${variant}"
       cat > "$out/case.prm" <<PRM
 include $root/prm/self_weight_column.prm
-set Constants = H=10, W=1, E=1e6, nu=$nu, rho=80, g=10, h=$h, tr=1
+set Constants = H=10, E=1e6, nu=$nu, rho=80, g=10, tr=1
 subsection Grid
   set Subdivisions = $nx, $(python3 -c "print(round(11/$h))")
 end

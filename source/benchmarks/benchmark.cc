@@ -126,11 +126,9 @@ namespace mpm
           if constexpr (dim >= 2)
             return std::make_unique<SelfWeightColumn<dim>>(
               constant(constants, "H", name),
-              constant(constants, "W", name),
               constant(constants, "rho", name),
               constant(constants, "g", name),
-              constant(constants, "nu", name),
-              constant(constants, "h", name));
+              constant(constants, "nu", name));
           else
             throw InputError(
               "Benchmark = self-weight column needs Dimension 2 or 3");

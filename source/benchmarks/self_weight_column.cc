@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/tria.h>
 
 #include <mpm/benchmarks/self_weight_column.h>
 #include <mpm/particles/particle_layout.h>
@@ -13,20 +14,13 @@ namespace mpm
 
     template <int dim>
     SelfWeightColumn<dim>::SelfWeightColumn(const double height,
-                                            const double width,
                                             const double rho,
                                             const double g,
-                                            const double nu,
-                                            const double h)
+                                            const double nu)
       : height(height)
-      , width(width)
       , rho(rho)
       , g(g)
       , nu(nu)
-      , h(h)
-      // cells of the column and one row above it for the settled top
-      , nx(static_cast<unsigned int>(std::ceil(width / h - 1e-9)))
-      , ny(static_cast<unsigned int>(std::ceil(height / h - 1e-9)) + 1)
     {}
 
     template <int dim>
@@ -43,9 +37,17 @@ namespace mpm
                                    const MPI_Comm comm) const
     {
       using L = ParticleLayout<dim>;
+      // The cells of the particles: global indices, so that every rank
+      // sees the sums of every cell.
+      const Triangulation<dim> *tria =
+        particles.n_locally_owned_particles() > 0 ?
+          &particles.begin()->get_surrounding_cell()->get_triangulation() :
+          nullptr;
+      const unsigned int n_cells = Utilities::MPI::max(
+        tria ? static_cast<unsigned int>(tria->n_global_active_cells()) : 0u,
+        comm);
       // per cell: V, V * pressure error; then totals: V, |yy error| V,
       // |p error| V
-      const unsigned int  n_cells = nx * ny;
       std::vector<double> local(2 * n_cells + 3, 0.);
       for (const auto &p : particles)
         {
@@ -61,43 +63,51 @@ namespace mpm
           local[2 * n_cells] += V;
           local[2 * n_cells + 1] += std::abs(s[1] - yy) * V;
           local[2 * n_cells + 2] += std::abs(p_mp - p_ex) * V;
-          const int i = static_cast<int>(std::floor(p.get_location()[0] / h));
-          const int j = static_cast<int>(std::floor(p.get_location()[1] / h));
-          if (i >= 0 && j >= 0 && i < int(nx) && j < int(ny))
-            {
-              local[2 * (i + nx * j)] += V;
-              local[2 * (i + nx * j) + 1] += (p_mp - p_ex) * V;
-            }
+          const auto c = p.get_surrounding_cell()->global_active_cell_index();
+          local[2 * c] += V;
+          local[2 * c + 1] += (p_mp - p_ex) * V;
         }
       std::vector<double> sum(local.size());
       Utilities::MPI::sum(local, comm, sum);
 
       const double scale = rho * g * height;
-      auto         error = [&](const unsigned int i, const unsigned int j) {
-        const double V = sum[2 * (i + nx * j)];
-        return V > 0 ? sum[2 * (i + nx * j) + 1] / V : std::nan("");
+      auto         error = [&](const types::global_cell_index c) {
+        const double V = sum[2 * c];
+        return V > 0 ? sum[2 * c + 1] / V : std::nan("");
       };
-      double       jumps2  = 0;
-      unsigned int n_pairs = 0;
-      for (unsigned int j = 0; j < ny; ++j)
-        for (unsigned int i = 0; i < nx; ++i)
+      // each pair once: from the owned cell with the smaller index
+      double jumps[2] = {};
+      if (tria)
+        for (const auto &cell : tria->active_cell_iterators())
           {
-            const double e = error(i, j);
+            if (!cell->is_locally_owned())
+              continue;
+            const auto   c = cell->global_active_cell_index();
+            const double e = error(c);
             if (std::isnan(e))
               continue;
-            const double right = i + 1 < nx ? error(i + 1, j) : std::nan("");
-            const double up    = j + 1 < ny ? error(i, j + 1) : std::nan("");
-            for (const double n : {right, up})
-              if (!std::isnan(n))
-                {
-                  jumps2 += (e - n) * (e - n);
-                  ++n_pairs;
-                }
+            for (const unsigned int f : cell->face_indices())
+              {
+                if (cell->at_boundary(f) || !cell->neighbor(f)->is_active())
+                  continue;
+                const auto n = cell->neighbor(f)->global_active_cell_index();
+                const double en = error(n);
+                if (n < c || std::isnan(en))
+                  continue;
+                jumps[0] += (e - en) * (e - en);
+                jumps[1] += 1;
+              }
           }
+      double global_jumps[2];
+      Utilities::MPI::sum(ArrayView<const double>(jumps, 2),
+                          comm,
+                          ArrayView<double>(global_jumps, 2));
       const double V = sum[2 * n_cells];
       return {sum[2 * n_cells + 1] / (V * scale),
               sum[2 * n_cells + 2] / (V * scale),
-              n_pairs > 0 ? std::sqrt(jumps2 / n_pairs) / scale : 0.};
+              global_jumps[1] > 0 ?
+                std::sqrt(global_jumps[0] / global_jumps[1]) / scale :
+                0.};
     }
 
     template class SelfWeightColumn<2>;

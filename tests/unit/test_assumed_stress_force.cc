@@ -1,0 +1,125 @@
+// The internal force of a cell's assumed-stress field (AssumedStressForce):
+// on an axis-parallel box it equals the exact integral of
+// -sigma(xi) grad N_v over the particle domains, for any particle layout
+// and any field coefficients (checked against a 6-point Gauss rule per
+// direction in every domain, which is exact for the polynomial
+// integrand); the forces sum to zero (linear momentum); and the particle
+// midpoint rule it replaces is not exact (the check can fail).
+#define BOOST_TEST_MODULE assumed_stress_force
+#ifndef BOOST_TEST_DYN_LINK
+#  define BOOST_TEST_DYN_LINK
+#endif
+#include <deal.II/base/quadrature_lib.h>
+
+#include <mpm/filters/assumed_stress.h>
+#include <mpm/filters/assumed_stress_force.h>
+#include <mpm/shape_functions/q1_cell.h>
+
+#include <random>
+
+#include <boost/test/unit_test.hpp>
+
+using namespace dealii;
+using namespace mpm::filters;
+
+namespace
+{
+  template <int dim>
+  void
+  check_box(const unsigned int seed)
+  {
+    constexpr unsigned int nv = mpm::shape_functions::n_q1<dim>;
+    std::mt19937           gen(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+
+    std::array<Point<dim>, nv> vertices;
+    Tensor<1, dim>             extent;
+    for (unsigned int d = 0; d < dim; ++d)
+      extent[d] = 0.5 + u(gen);
+    for (unsigned int v = 0; v < nv; ++v)
+      for (unsigned int d = 0; d < dim; ++d)
+        vertices[v][d] = 1.0 + (((v >> d) & 1) ? extent[d] : 0.);
+    mpm::shape_functions::Q1Cell<dim> cell;
+    cell.reinit(vertices, 1e-12);
+    BOOST_REQUIRE(cell.is_box);
+
+    Tensor<2, dim> J0;
+    for (unsigned int d = 0; d < dim; ++d)
+      J0[d][d] = extent[d];
+    const AssumedStressProjection<dim> field(J0, Metric::mass);
+    double beta[AssumedStressProjection<dim>::n_beta];
+    for (double &b : beta)
+      b = 2 * u(gen) - 1;
+
+    // particles: random centres, axis-parallel domains of random size
+    AssumedStressForce<dim> force;
+    force.clear();
+    const QGauss<dim>   gauss(6);
+    std::vector<double> exact(nv * dim, 0.), midpoint(nv * dim, 0.);
+    double              N[nv];
+    Tensor<1, dim>      G[nv];
+    for (unsigned int p = 0; p < 7; ++p)
+      {
+        Point<dim>     xi;
+        Tensor<2, dim> q; // half-widths in reference coordinates
+        double         V = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            q[d][d] = 0.05 + 0.2 * u(gen);
+            xi[d]   = q[d][d] + (1 - 2 * q[d][d]) * u(gen);
+            V *= 2 * q[d][d] * extent[d];
+          }
+        force.add_particle(xi, q, V);
+        for (unsigned int k = 0; k < gauss.size(); ++k)
+          {
+            Point<dim> x = xi;
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] += q[d][d] * (2 * gauss.point(k)[d] - 1);
+            cell.values_and_gradients(x, N, G);
+            const auto sigma = field.field(x, beta);
+            for (unsigned int v = 0; v < nv; ++v)
+              {
+                const Tensor<1, dim> f = -V * gauss.weight(k) * (sigma * G[v]);
+                for (unsigned int d = 0; d < dim; ++d)
+                  exact[v * dim + d] += f[d];
+              }
+          }
+        cell.values_and_gradients(xi, N, G);
+        const auto sigma = field.field(xi, beta);
+        for (unsigned int v = 0; v < nv; ++v)
+          {
+            const Tensor<1, dim> f = -V * (sigma * G[v]);
+            for (unsigned int d = 0; d < dim; ++d)
+              midpoint[v * dim + d] += f[d];
+          }
+      }
+    std::vector<double> f(nv * dim, 0.);
+    force.add_internal_force(cell, field, beta, f.data());
+
+    double scale = 0, error = 0, midpoint_error = 0;
+    double sum[dim] = {};
+    for (unsigned int i = 0; i < nv * dim; ++i)
+      {
+        scale          = std::max(scale, std::abs(exact[i]));
+        error          = std::max(error, std::abs(f[i] - exact[i]));
+        midpoint_error = std::max(midpoint_error, std::abs(midpoint[i] - exact[i]));
+        sum[i % dim] += f[i];
+      }
+    BOOST_TEST(error <= 1e-13 * scale);
+    BOOST_TEST(midpoint_error > 1e-4 * scale);
+    for (unsigned int d = 0; d < dim; ++d)
+      BOOST_TEST(std::abs(sum[d]) <= 1e-13 * scale);
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(exact_on_boxes_2d)
+{
+  for (unsigned int seed = 1; seed <= 20; ++seed)
+    check_box<2>(seed);
+}
+
+BOOST_AUTO_TEST_CASE(exact_on_boxes_3d)
+{
+  for (unsigned int seed = 1; seed <= 20; ++seed)
+    check_box<3>(seed);
+}
