@@ -202,19 +202,47 @@ namespace mpm
 
       double beta[n_beta] = {};
       Result result       = Result::full;
-      // Relative tolerance on the condition: below it the layout of the
-      // particles cannot determine the linear terms.
-      // H is symmetric positive semi-definite. A pivoted LDL^T whose
-      // smallest pivot is tiny against the largest says that the particle
-      // layout does not determine every beta.
-      const Eigen::LDLT<Matrix> ldlt(H);
-      const auto               &D = ldlt.vectorD();
-      if (ldlt.info() == Eigen::Success &&
-          D.minCoeff() > 1e-10 * D.cwiseAbs().maxCoeff())
+      // H is symmetric positive semi-definite. Its LDL^T factorisation
+      // (unpivoted: the matrix is tiny and SPD when the layout is good)
+      // says whether the layout determines every beta: a pivot that is
+      // tiny against its diagonal entry means that column depends on the
+      // previous ones (one particle, collinear particles).
+      double L[n_beta][n_beta], D[n_beta];
+      bool   regular = true;
+      for (unsigned int j = 0; j < n_beta && regular; ++j)
         {
-          const Vector b = ldlt.solve(R);
-          for (unsigned int k = 0; k < n_beta; ++k)
-            beta[k] = b(k);
+          double d = H(j, j);
+          for (unsigned int k = 0; k < j; ++k)
+            d -= L[j][k] * L[j][k] * D[k];
+          if (!(d > 1e-10 * H(j, j)))
+            {
+              regular = false;
+              break;
+            }
+          D[j] = d;
+          for (unsigned int i = j + 1; i < n_beta; ++i)
+            {
+              double l = H(i, j);
+              for (unsigned int k = 0; k < j; ++k)
+                l -= L[i][k] * L[j][k] * D[k];
+              L[i][j] = l / d;
+            }
+        }
+      if (regular)
+        {
+          // L y = R, D z = y, L^T beta = z
+          for (unsigned int i = 0; i < n_beta; ++i)
+            {
+              double y = R(i);
+              for (unsigned int k = 0; k < i; ++k)
+                y -= L[i][k] * beta[k];
+              beta[i] = y;
+            }
+          for (unsigned int i = 0; i < n_beta; ++i)
+            beta[i] /= D[i];
+          for (unsigned int i = n_beta; i-- > 0;)
+            for (unsigned int k = i + 1; k < n_beta; ++k)
+              beta[i] -= L[k][i] * beta[k];
         }
       else
         {

@@ -35,35 +35,76 @@ namespace mpm
                                           const Tensor<2, dim> &q,
                                           const double          V)
     {
-      any                       = true;
-      const double     g        = 1. / std::sqrt(3.);
-      const double     w        = V / (1u << dim);
-      constexpr unsigned int ng = 1u << dim;
-      for (unsigned int gp = 0; gp < ng; ++gp)
+      any = true;
+      // 1D averages of l_0, l_1, l_2 over [c - a, c + a]: l(c) + l'' a^2/6
+      // with l'' = 4, -8, 4.
+      double l[dim][3];
+      for (unsigned int d = 0; d < dim; ++d)
         {
-          double l[dim][3];
-          for (unsigned int d = 0; d < dim; ++d)
+          double a2 = 0;
+          for (unsigned int k = 0; k < dim; ++k)
+            a2 += q[d][k] * q[d][k];
+          lagrange(xi[d], l[d]);
+          const double c = 4 * a2 / 6;
+          l[d][0] += c;
+          l[d][1] -= 2 * c;
+          l[d][2] += c;
+        }
+      if constexpr (dim == 2)
+        {
+          for (unsigned int j = 0; j < 3; ++j)
             {
-              double x = xi[d];
-              for (unsigned int k = 0; k < dim; ++k)
-                x += q[d][k] * (((gp >> k) & 1) ? g : -g);
-              lagrange(x, l[d]);
+              const double lj = V * l[1][j];
+              for (unsigned int i = 0; i < 3; ++i)
+                weight[i + 3 * j] += lj * l[0][i];
             }
-          if constexpr (dim == 2)
-            {
-              for (unsigned int j = 0; j < 3; ++j)
+        }
+      else
+        {
+          for (unsigned int m = 0; m < 3; ++m)
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                const double ljm = V * l[1][j] * l[2][m];
                 for (unsigned int i = 0; i < 3; ++i)
-                  weight[i + 3 * j] += w * l[0][i] * l[1][j];
-            }
-          else
+                  weight[i + 3 * j + 9 * m] += ljm * l[0][i];
+              }
+        }
+    }
+
+    template <int dim>
+    void
+    AssumedStressForce<dim>::build_box_operator(
+      const shape_functions::Q1Cell<dim> &geo,
+      const AssumedStressProjection<dim> &field) const
+    {
+      box_operator.clear();
+      box_extent = geo.extent;
+      double         N[n_nodes];
+      Tensor<1, dim> G[n_nodes];
+      constexpr unsigned int n_beta = AssumedStressProjection<dim>::n_beta;
+      for (unsigned int k = 0; k < n_points; ++k)
+        {
+          Point<dim>   x;
+          unsigned int r = k;
+          for (unsigned int d = 0; d < dim; ++d, r /= 3)
+            x[d] = 0.5 * (r % 3);
+          geo.values_and_gradients(x, N, G);
+          for (unsigned int b = 0; b < n_beta; ++b)
             {
-              for (unsigned int m = 0; m < 3; ++m)
-                for (unsigned int j = 0; j < 3; ++j)
-                  {
-                    const double ljm = w * l[1][j] * l[2][m];
-                    for (unsigned int i = 0; i < 3; ++i)
-                      weight[i + 3 * j + 9 * m] += ljm * l[0][i];
-                  }
+              double unit[n_beta] = {};
+              unit[b]             = 1;
+              const SymmetricTensor<2, dim> sigma = field.field(x, unit);
+              for (unsigned int v = 0; v < n_nodes; ++v)
+                {
+                  const Tensor<1, dim> f = -(sigma * G[v]);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    if (f[d] != 0.)
+                      box_operator.push_back(
+                        {static_cast<unsigned short>(k),
+                         static_cast<unsigned short>(b),
+                         static_cast<unsigned short>(v * dim + d),
+                         f[d]});
+                }
             }
         }
     }
@@ -76,6 +117,16 @@ namespace mpm
       const double                       *beta,
       double                             *force) const
     {
+      if (geo.is_box)
+        {
+          // Cells of one size share the operator (the field is fixed by
+          // the cell's Jacobian, i.e. its extent).
+          if (box_operator.empty() || !(geo.extent == box_extent))
+            build_box_operator(geo, field);
+          for (const Term &t : box_operator)
+            force[t.vd] += t.c * weight[t.k] * beta[t.b];
+          return;
+        }
       double         N[n_nodes];
       Tensor<1, dim> G[n_nodes];
       for (unsigned int k = 0; k < n_points; ++k)

@@ -59,15 +59,7 @@ namespace mpm
     background.setup(params.boundary);
     create_bodies();
     create_particles();
-    {
-      std::vector<char> filtered(bodies.size());
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        filtered[b] = bodies[b].prm.assumed_stress_filter;
-      cell_stress.reinit(filtered,
-                         background.triangulation().n_active_cells());
-    }
-    // The first force integrates the filtered initial stress.
-    filter_stress();
+    stress_filter = std::make_unique<filters::StressFilter<dim>>(bodies);
     background.initialize_vector(p2g, transfer::P2GLayout<dim>::n_components);
     background.initialize_vector(kinematics,
                                  KinematicsLayout<dim>::n_components);
@@ -391,7 +383,6 @@ namespace mpm
             local_error = e;
         }
         update_stress(dt);
-        filter_stress();
         particle_to_grid(P2GContent::force);
         update_grid(dt);
         grid_to_particle(dt);
@@ -406,10 +397,6 @@ namespace mpm
         update_stress(dt);
       }
     update_positions();
-    // USL, MUSL: filter where the next force is computed, i.e. on the
-    // particles each cell holds after the move.
-    if (params.time.scheme != Scheme::usf)
-      filter_stress();
     current_time += dt;
     ++current_step;
     check_errors();
@@ -426,7 +413,7 @@ namespace mpm
                                current_time,
                                content,
                                p2g,
-                               any_filter ? &cell_stress : nullptr);
+                               stress_filter.get());
   }
 
   template <int dim>
@@ -491,11 +478,7 @@ namespace mpm
     if (!any_filter)
       return;
     TimerOutput::Scope t(timer, "stress filter");
-    n_filter_fallbacks +=
-      filters::apply_stress_filter(background,
-                                   particle_handler,
-                                   bodies,
-                                   cell_stress);
+    stress_filter->apply(background, particle_handler);
   }
 
   template <int dim>
@@ -681,7 +664,7 @@ namespace mpm
       }
     if (any_filter)
       pcout << "  stress filter: "
-            << Utilities::MPI::sum(n_filter_fallbacks, comm)
+            << Utilities::MPI::sum(stress_filter->n_fallbacks, comm)
             << " cell projections fell back to constant stress" << std::endl;
     print_memory();
     timer.print_summary();
@@ -729,6 +712,9 @@ namespace mpm
   void
   Simulator<dim>::write_output()
   {
+    // The stress the next force will be computed from (the filter is a
+    // projection: applying it here changes nothing else).
+    filter_stress();
     TimerOutput::Scope t(timer, "output");
     particle_handler.update_cached_numbers();
     const auto &out   = params.output;

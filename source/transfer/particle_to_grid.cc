@@ -1,5 +1,6 @@
 #include <mpm/filters/assumed_stress_force.h>
 #include <mpm/filters/assumed_stress.h>
+#include <mpm/filters/stress_filter.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/transfer/particle_to_grid.h>
@@ -60,7 +61,7 @@ namespace mpm
                      const double                     time,
                      const P2GContent                 content,
                      NodalVector                     &nodal,
-                     const filters::CellStressField<dim> *filtered)
+                     filters::StressFilter<dim>      *filter)
     {
       using L                              = ParticleLayout<dim>;
       constexpr unsigned int nv            = shape_functions::n_q1<dim>;
@@ -90,13 +91,13 @@ namespace mpm
       // integrated over the particle domains (AssumedStressForce).
       constexpr bool has_filter = dim > 1;
       constexpr int  fdim       = dim == 1 ? 2 : dim; // no filter in 1D
-      using Force      = filters::AssumedStressForce<fdim>;
-      using Projection = filters::AssumedStressProjection<fdim>;
-      std::vector<Force>          field_force(has_filter ? bodies.size() : 0);
-      std::vector<unsigned int>   force_bodies;
-      std::unique_ptr<Projection> evaluator;
-      Tensor<2, dim> evaluator_J0, J0_inverse;
-      Point<dim>     centre;
+      using Force               = filters::AssumedStressForce<fdim>;
+      const bool filtering      = has_filter && do_force && filter &&
+                             filter->any();
+      std::vector<Force>        field_force(filtering ? bodies.size() : 0);
+      std::vector<unsigned int> force_bodies;
+      Tensor<2, dim>            J0_inverse;
+      Point<dim>                centre;
       for (unsigned int d = 0; d < dim; ++d)
         centre[d] = 0.5;
 
@@ -106,8 +107,7 @@ namespace mpm
         grid, particles, [&](const auto &cell, const auto &pic) {
           const auto         &geo   = grid.geometry(cell);
           const unsigned int *nodes = grid.nodes(cell);
-          const unsigned int  cell_index = cell->active_cell_index();
-          bool                J0_known   = false;
+          bool                J0_known = false;
 
           // Accumulate per cell, then scatter once.
           double local[nv][1 + 2 * dim] = {};
@@ -131,19 +131,12 @@ namespace mpm
                   // share of the cell's filtered field.
                   bool by_field = false;
                   if constexpr (has_filter)
-                    if (filtered && filtered->get(b, cell_index))
+                    if (filtering && filter->filtered(b))
                       {
                         if (!J0_known)
                           {
-                            const Tensor<2, dim> J0 = geo.jacobian(centre);
-                            J0_inverse              = invert(J0);
-                            J0_known                = true;
-                            if (!evaluator || !(J0 == evaluator_J0))
-                              {
-                                evaluator = std::make_unique<Projection>(
-                                  J0, filters::Metric::mass);
-                                evaluator_J0 = J0;
-                              }
+                            J0_inverse = invert(geo.jacobian(centre));
+                            J0_known   = true;
                           }
                         if (field_force[b].empty())
                           force_bodies.push_back(b);
@@ -192,14 +185,39 @@ namespace mpm
                   }
             }
 
+          // Filtered bodies: project their stresses in this cell, then
+          // the force of the projected field.
           if constexpr (has_filter)
             for (const unsigned int b : force_bodies)
               {
-                double f[nv * dim] = {};
-                field_force[b].add_internal_force(geo,
-                                                  *evaluator,
-                                                  filtered->get(b, cell_index),
-                                                  f);
+                double     beta[filters::StressFilter<fdim>::n_beta];
+                double     f[nv * dim] = {};
+                const auto result = filter->filter_cell(geo, pic, b, beta);
+                if (result != filters::StressFilter<dim>::Result::unchanged)
+                  field_force[b].add_internal_force(geo,
+                                                    filter->projection(b),
+                                                    beta,
+                                                    f);
+                else
+                  // nothing to project onto: the particles' own stresses
+                  for (const auto &p : pic)
+                    {
+                      const double *prop = p.get_properties().data();
+                      if (static_cast<unsigned int>(prop[L::body]) != b)
+                        continue;
+                      geo.values_and_gradients(p.get_reference_location(),
+                                               N,
+                                               G);
+                      const Tensor<2, dim> sigma =
+                        -prop[L::volume] *
+                        in_plane_stress<dim>(prop + L::stress);
+                      for (unsigned int v = 0; v < nv; ++v)
+                        {
+                          const Tensor<1, dim> fv = sigma * G[v];
+                          for (unsigned int d = 0; d < dim; ++d)
+                            f[v * dim + d] += fv[d];
+                        }
+                    }
                 for (unsigned int v = 0; v < nv; ++v)
                   for (unsigned int d = 0; d < dim; ++d)
                     local[v][1 + dim + d] += f[v * dim + d];
@@ -230,7 +248,7 @@ namespace mpm
                         double,
                         P2GContent,
                         NodalVector &,
-                        const filters::CellStressField<1> *);
+                        filters::StressFilter<1> *);
     template void
     particle_to_grid<2>(const BackgroundGrid<2> &,
                         Particles::ParticleHandler<2> &,
@@ -238,7 +256,7 @@ namespace mpm
                         double,
                         P2GContent,
                         NodalVector &,
-                        const filters::CellStressField<2> *);
+                        filters::StressFilter<2> *);
     template void
     particle_to_grid<3>(const BackgroundGrid<3> &,
                         Particles::ParticleHandler<3> &,
@@ -246,6 +264,6 @@ namespace mpm
                         double,
                         P2GContent,
                         NodalVector &,
-                        const filters::CellStressField<3> *);
+                        filters::StressFilter<3> *);
   } // namespace transfer
 } // namespace mpm

@@ -6,6 +6,8 @@
 #include <mpm/filters/assumed_stress.h>
 #include <mpm/shape_functions/q1_cell.h>
 
+#include <vector>
+
 namespace mpm
 {
   namespace filters
@@ -26,11 +28,14 @@ namespace mpm
      * Lagrange polynomials l_k of the lattice {0, 1/2, 1}^dim. Hence
      *   int sigma grad N_v = sum_k W_k sigma(x_k) grad N_v(x_k),
      *   W_k = sum_p int_{Omega_p} l_k dV,
-     * exact for every particle layout: each particle adds to the 3^dim
-     * lattice weights (2-point Gauss rule over its domain, exact for
-     * axis-parallel domains), and the force is evaluated once per cell at
-     * the lattice points. On distorted cells the same formula is a
-     * consistent quadrature of the smooth integrand.
+     * exact for every particle layout. Each particle adds the averages
+     * of the l_k over its domain: products of the 1D averages
+     * l(c) + l'' a^2/6 over the domain's extent a in each direction
+     * (a^2 = the domain's second moment, exact for axis-parallel domains;
+     * the correlation of a sheared domain is neglected). The force is
+     * then linear in the weights and in beta: on boxes a sparse operator
+     * cached per cell size, on other cells the integrand evaluated at the
+     * lattice points (a consistent quadrature of the smooth integrand).
      */
     template <int dim>
     class AssumedStressForce
@@ -66,8 +71,21 @@ namespace mpm
                          double                             *force) const;
 
     private:
+      /// The force operator of a box: f[vd] += c W[k] beta[b].
+      struct Term
+      {
+        unsigned short k, b, vd;
+        double         c;
+      };
+      void
+      build_box_operator(const shape_functions::Q1Cell<dim> &geo,
+                         const AssumedStressProjection<dim> &field) const;
+
       double weight[n_points];
       bool   any = false;
+
+      mutable std::vector<Term>     box_operator;
+      mutable dealii::Tensor<1, dim> box_extent;
     };
   } // namespace filters
 } // namespace mpm

@@ -2,10 +2,12 @@
 
 #include <deal.II/particles/particle_handler.h>
 
-#include <mpm/filters/cell_stress_field.h>
+#include <mpm/filters/assumed_stress.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/particles/body.h>
+#include <mpm/particles/particle_layout.h>
 
+#include <memory>
 #include <vector>
 
 namespace mpm
@@ -13,21 +15,120 @@ namespace mpm
   namespace filters
   {
     /**
-     * The filter phase of the step: for every owned cell and every body
-     * with `Stress filter = assumed stress`, the in-plane stresses of that
+     * The assumed-stress filter of the bodies with `Stress filter =
+     * assumed stress`, one cell at a time: the in-plane stresses of one
      * body's particles in the cell (the particles the cell holds) are
      * replaced by their projection onto the assumed-stress field of the
-     * cell (AssumedStressProjection). The out-of-plane stress of 2D models
-     * is left as the material computed it. The coefficients of each
-     * cell's field go to @p field, for the internal force of the next
-     * P2G. Returns the number of cells that fell back to constant stress
-     * on this rank.
+     * cell (AssumedStressProjection), whose coefficients are returned for
+     * the force. The out-of-plane stress of 2D models is left as the
+     * material computed it.
+     *
+     * The internal-force computation (transfer::particle_to_grid) calls
+     * it for every cell, so the field that makes the force is the
+     * projection over the particles the cell holds at that moment; output
+     * calls apply() so that what is written is that same state (the
+     * projection is idempotent, so this changes nothing for the dynamics).
      */
     template <int dim>
-    unsigned int
-    apply_stress_filter(const BackgroundGrid<dim>               &grid,
-                        dealii::Particles::ParticleHandler<dim> &particles,
-                        const std::vector<Body<dim>>            &bodies,
-                        CellStressField<dim>                    &field);
+    class StressFilter
+    {
+    public:
+      using Result = typename AssumedStressProjection<dim>::Result;
+      static constexpr unsigned int n_beta =
+        AssumedStressProjection<dim>::n_beta;
+
+      explicit StressFilter(const std::vector<Body<dim>> &bodies);
+
+      /// Whether body @p b is filtered.
+      bool
+      filtered(const unsigned int b) const
+      {
+        return b < metric.size() && is_filtered[b];
+      }
+
+      bool
+      any() const
+      {
+        return any_filtered;
+      }
+
+      /**
+       * Filter body @p b's particles among @p particles_in_cell (a cell
+       * with geometry @p geo); the field's coefficients go to @p beta.
+       */
+      template <typename ParticleRange>
+      Result
+      filter_cell(const shape_functions::Q1Cell<dim> &geo,
+                  const ParticleRange                &particles_in_cell,
+                  const unsigned int                  b,
+                  double                             *beta);
+
+      /// The projection (and field) filter_cell() last used for body b.
+      const AssumedStressProjection<dim> &
+      projection(const unsigned int b) const
+      {
+        return *projections[b];
+      }
+
+      /// Filter every owned cell (for output).
+      void
+      apply(const BackgroundGrid<dim>               &grid,
+            dealii::Particles::ParticleHandler<dim> &particles);
+
+      /// Cells that fell back to constant stress, on this rank, so far.
+      unsigned int n_fallbacks = 0;
+
+    private:
+      Result
+      project(const shape_functions::Q1Cell<dim> &geo,
+              const unsigned int                  b,
+              double                             *beta);
+
+      std::vector<char>                                          is_filtered;
+      bool                                                       any_filtered;
+      std::vector<Metric>                                        metric;
+      std::vector<dealii::SymmetricTensor<4, dim>>               compliance;
+      std::vector<std::unique_ptr<AssumedStressProjection<dim>>> projections;
+      std::vector<dealii::Tensor<2, dim>>                        last_J0;
+      std::vector<StressSample<dim>>                             samples;
+      std::vector<double *>                                      targets;
+    };
+
+    template <int dim>
+    template <typename ParticleRange>
+    typename StressFilter<dim>::Result
+    StressFilter<dim>::filter_cell(const shape_functions::Q1Cell<dim> &geo,
+                                   const ParticleRange &particles_in_cell,
+                                   const unsigned int   b,
+                                   double              *beta)
+    {
+      using L = ParticleLayout<dim>;
+      samples.clear();
+      targets.clear();
+      const bool by_mass = metric[b] == Metric::mass;
+      for (auto &p : particles_in_cell)
+        {
+          double *prop = p.get_properties().data();
+          if (static_cast<unsigned int>(prop[L::body]) != b)
+            continue;
+          StressSample<dim> s;
+          s.xi         = p.get_reference_location();
+          s.weight     = by_mass ? prop[L::mass] : prop[L::volume];
+          const double *v = prop + L::stress;
+          // Voigt xx yy zz yz xz xy
+          s.stress[0][0] = v[0];
+          s.stress[1][1] = v[1];
+          s.stress[0][1] = v[5];
+          if constexpr (dim == 3)
+            {
+              s.stress[2][2] = v[2];
+              s.stress[1][2] = v[3];
+              s.stress[0][2] = v[4];
+            }
+          samples.push_back(s);
+          targets.push_back(prop + L::stress);
+        }
+      return project(geo, b, beta);
+    }
   } // namespace filters
 } // namespace mpm

@@ -6,7 +6,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/benchmarks/benchmark.h>
-#include <mpm/filters/cell_stress_field.h>
+#include <mpm/filters/stress_filter.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
@@ -178,9 +178,7 @@ namespace mpm
     unsigned int last_output_step = dealii::numbers::invalid_unsigned_int;
     unsigned int n_global_sorts   = 0;
     bool         any_filter       = false;
-    filters::CellStressField<dim> cell_stress; ///< the last filter's fields
-    unsigned int n_filter_fallbacks =
-      0; ///< local, cells with constant fallback
+    std::unique_ptr<filters::StressFilter<dim>> stress_filter;
     double wall_start = 0, last_progress = 0;
   };
 } // namespace mpm

@@ -2,11 +2,16 @@
 
 #include <deal.II/particles/particle_handler.h>
 
-#include <mpm/filters/cell_stress_field.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/particles/body.h>
 
 #include <vector>
+
+namespace mpm::filters
+{
+  template <int dim>
+  class StressFilter;
+}
 
 namespace mpm
 {
@@ -39,10 +44,12 @@ namespace mpm
      * adds into the ghosted vector @p nodal (packed with P2GLayout, or
      * with dim components for P2GContent::momentum) and compresses it.
      *
-     * Particles of a body that @p filtered holds a field for in their
-     * cell contribute their domain instead of their own stress to the
-     * internal force: the cell's assumed-stress field is integrated
-     * exactly over the particle domains (filters::AssumedStressForce).
+     * With @p filter, the bodies it filters get their stresses projected
+     * per cell here (filters::StressFilter, written back to the
+     * particles), and the internal force of the projected field is
+     * integrated exactly over the particle domains
+     * (filters::AssumedStressForce) instead of summing the particles'
+     * stresses.
      */
     template <int dim>
     void
@@ -52,6 +59,6 @@ namespace mpm
                      const double                             time,
                      const P2GContent                         content,
                      NodalVector                             &nodal,
-                     const filters::CellStressField<dim> *filtered = nullptr);
+                     filters::StressFilter<dim> *filter = nullptr);
   } // namespace transfer
 } // namespace mpm
