@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Vibrating cantilever (BENCHMARKS.md section 2): the period for standard
+# MPM and the assumed-stress filter (both metrics) at 1, 2 and 4 cells
+# through the depth with 2x2 particles per cell, plus standard and
+# compliance filter with 3x3 and 4x4 particles. Writes OUT/table.txt:
+# cells ppc variant T T/T_EB T/T_Timoshenko. About 2 min on 2 cores.
+# Usage: scripts/cantilever_study.sh [OUT]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=$(realpath -m "${1:-results/cantilever}")
+mkdir -p "$out"
+T_Ti=$("$root/scripts/timoshenko_period.py" | sed 's/.*T_Timoshenko = \([0-9.]*\).*/\1/')
+table="$out/table.txt"
+echo "cells ppc variant T T/T_EB T/T_Timoshenko" > "$table"
+run() { # cells ppc variant
+  local n=$1 ppc=$2 variant=$3 filter=none metric=mass
+  case $variant in
+    filter-mass) filter="assumed stress" ;;
+    filter-compliance) filter="assumed stress"; metric=compliance ;;
+  esac
+  local dir="$out/${n}_${ppc}_${variant}"
+  cat > "$out/case.prm" <<PRM
+include $root/prm/cantilever_beam.prm
+subsection Grid
+  set Subdivisions = $((12 * n)), $((5 * n))
+end
+subsection Output
+  set Directory = $dir
+end
+subsection Bodies
+  subsection Body 0
+    set Subdivisions = $((10 * n)), $n
+    set Particles per direction = $ppc
+    subsection Locking remedies
+      set Stress filter = $filter
+      set Filter metric = $metric
+    end
+  end
+end
+PRM
+  rm -rf "$dir"
+  "$root/build/mpm" "$out/case.prm" > "$out/log.txt"
+  local T
+  T=$("$root/scripts/beam_period.py" "$dir" | sed 's/^T = \([0-9.]*\) s.*/\1/')
+  python3 -c "
+T=$T; T_EB=2*3.141592653589793/(3.51602*(1e7*0.1**3/12/(1000*0.1))**0.5)
+print('$n $ppc $variant %.5f %.4f %.4f' % (T, T/T_EB, T/$T_Ti))" | tee -a "$table"
+}
+for n in 1 2 4; do
+  for v in standard filter-mass filter-compliance; do run $n 2 $v; done
+done
+for ppc in 3 4; do
+  for n in 1 2; do
+    for v in standard filter-compliance; do run $n $ppc $v; done
+  done
+done
