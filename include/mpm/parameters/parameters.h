@@ -109,6 +109,8 @@ namespace mpm
       /// Locking remedies of this body (doc/theory.md).
       bool assumed_stress_filter = false;
       bool compliance_metric     = false;
+      bool convection_correction = false; ///< 1D only
+      bool convection_body_force = true;  ///< with convection_correction
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

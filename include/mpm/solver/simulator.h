@@ -6,6 +6,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/benchmarks/benchmark.h>
+#include <mpm/filters/convection_correction.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
@@ -178,6 +179,9 @@ namespace mpm
     bool         any_filter       = false;
     unsigned int n_filter_fallbacks =
       0; ///< local, cells with constant fallback
-    double wall_start = 0, last_progress = 0;
+    /// The 1D convection correction, around the P2G passes with forces.
+    filters::ConvectionCorrection<dim> convection_correction;
+    bool                               any_convection_correction = false;
+    double                             wall_start = 0, last_progress = 0;
   };
 } // namespace mpm
