@@ -3,7 +3,12 @@
 UCD file: nx x ny cells, every node moved by a reproducible pseudo-random
 offset of at most `amount` times the cell size, nodes on the box edges
 only along their edge (so slip walls stay straight). All boundary faces get
-id 0. Usage: make_distorted_grid.py OUT.ucd W Ht nx ny [amount] [seed]"""
+id 0. Usage: make_distorted_grid.py OUT.ucd W Ht nx ny [amount] [seed]
+                               [BODY.ucd Hb]
+With BODY.ucd and Hb (a multiple of Ht/ny): the nodes on y = Hb stay on
+that line too, and the cells below it are written to BODY.ucd as well, a
+body mesh that conforms to the grid (particles then sit in the grid cells
+as quadrature points sit in finite elements)."""
 import random
 import sys
 
@@ -12,6 +17,8 @@ W, Ht = float(sys.argv[2]), float(sys.argv[3])
 nx, ny = int(sys.argv[4]), int(sys.argv[5])
 amount = float(sys.argv[6]) if len(sys.argv) > 6 else 0.2
 rng = random.Random(int(sys.argv[7]) if len(sys.argv) > 7 else 1)
+body = sys.argv[8] if len(sys.argv) > 9 else None
+jb = round(float(sys.argv[9]) / (Ht / ny)) if body else None
 hx, hy = W / nx, Ht / ny
 nodes = []
 for j in range(ny + 1):
@@ -20,16 +27,25 @@ for j in range(ny + 1):
         dy = rng.uniform(-amount, amount) * hy
         if i in (0, nx):
             dx = 0
-        if j in (0, ny):
+        if j in (0, ny) or j == jb:
             dy = 0
         nodes.append((i * hx + dx, j * hy + dy))
-with open(out, "w") as f:
-    f.write(f"{len(nodes)} {nx * ny} 0 0 0\n")
-    for k, (x, y) in enumerate(nodes):
-        f.write(f"{k + 1} {x:.12f} {y:.12f} 0\n")
-    c = 0
-    for j in range(ny):
-        for i in range(nx):
-            c += 1
-            a = j * (nx + 1) + i + 1
-            f.write(f"{c} 0 quad {a} {a + 1} {a + nx + 2} {a + nx + 1}\n")
+
+
+def write(path, rows):
+    n_nodes = (rows + 1) * (nx + 1)
+    with open(path, "w") as f:
+        f.write(f"{n_nodes} {nx * rows} 0 0 0\n")
+        for k, (x, y) in enumerate(nodes[:n_nodes]):
+            f.write(f"{k + 1} {x:.12f} {y:.12f} 0\n")
+        c = 0
+        for j in range(rows):
+            for i in range(nx):
+                c += 1
+                a = j * (nx + 1) + i + 1
+                f.write(f"{c} 0 quad {a} {a + 1} {a + nx + 2} {a + nx + 1}\n")
+
+
+write(out, ny)
+if body:
+    write(body, jb)

@@ -3,6 +3,7 @@
 #include <mpm/benchmarks/benchmark.h>
 #include <mpm/benchmarks/cantilever.h>
 #include <mpm/benchmarks/self_weight_column.h>
+#include <mpm/benchmarks/convecting_bar.h>
 #include <mpm/benchmarks/spinning_disk.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/utilities/input_error.h>
@@ -113,6 +114,13 @@ namespace mpm
           else
             throw InputError("Benchmark = spinning disk needs Dimension = 2");
         }
+      if (name == "convecting bar")
+        return std::make_unique<ConvectingBar<dim>>(
+          constant(constants, "L", name),
+          constant(constants, "A", name),
+          constant(constants, "b0", name),
+          constant(constants, "v0", name),
+          constant(constants, "x0", name));
       if (name == "cantilever")
         {
           if constexpr (dim >= 2)
@@ -135,7 +143,7 @@ namespace mpm
         }
       throw InputError("Benchmark = '" + name +
                        "' is unknown; known: none, axial bar, spinning disk, "
-                       "cantilever, self-weight column");
+                       "cantilever, self-weight column, convecting bar");
     }
 
     template std::unique_ptr<Benchmark<1>>

@@ -353,12 +353,25 @@ namespace mpm
       prm.declare_entry(
         "Stress filter",
         "none",
-        Patterns::Selection("none|assumed stress"),
+        Patterns::Selection("none|assumed stress|convection correction"),
         "assumed stress: project the stresses of this body's particles in "
         "each cell onto the Pian-Sumihara field of the cell (5 parameters "
         "in 2D, 18 in 3D) where the next internal force is computed, and "
         "integrate that field's force exactly over the particle domains "
-        "(doc/theory.md). 2D and 3D.");
+        "(doc/theory.md). 2D and 3D. "
+        "convection correction: the internal force of each cell integrates "
+        "the least-squares line of its particles' stresses exactly over the "
+        "part of the cell the body occupies (the seed's correction of the "
+        "cell-crossing error); the stored stresses are not changed. 1D.");
+      prm.declare_entry(
+        "Body force correction",
+        "true",
+        Patterns::Bool(),
+        "With Stress filter = convection correction: integrate the body "
+        "force the same way, the least-squares line of the particles' force "
+        "per length integrated exactly against the shape functions over the "
+        "occupied part of each cell, consistently with the stress; the "
+        "body's total load stays sum_p m_p b_p (doc/theory.md, 4.11).");
       prm.declare_entry("Filter metric",
                         "mass",
                         Patterns::Selection("mass|compliance"),
@@ -403,6 +416,9 @@ namespace mpm
       traction_boundary_ids   = parse_id_list(prm.get("Traction boundary ids"));
       prm.enter_subsection("Locking remedies");
       assumed_stress_filter = prm.get("Stress filter") == "assumed stress";
+      convection_correction =
+        prm.get("Stress filter") == "convection correction";
+      convection_body_force = prm.get_bool("Body force correction");
       compliance_metric     = prm.get("Filter metric") == "compliance";
       const std::string vs  = prm.get("Volumetric smoothing");
       volumetric_smoothing  = vs == "cell" ? filters::VolumetricSmoothing::cell :
@@ -412,6 +428,11 @@ namespace mpm
       if (assumed_stress_filter && dim == 1)
         throw InputError("Locking remedies/Stress filter = assumed stress "
                          "needs Dimension 2 or 3");
+      if (convection_correction && dim != 1)
+        throw InputError("Locking remedies/Stress filter = convection "
+                         "correction is the 1D correction of the "
+                         "cell-crossing error and needs Dimension 1 (in 2D "
+                         "and 3D use assumed stress)");
       if (geometry == Geometry::box)
         for (unsigned int d = 0; d < dim; ++d)
           if (!(upper[d] > lower[d]))

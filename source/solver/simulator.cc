@@ -150,6 +150,8 @@ namespace mpm
         layout.n_history =
           std::max(layout.n_history, body.material->n_history());
         any_filter = any_filter || body.prm.assumed_stress_filter;
+        any_convection_correction =
+          any_convection_correction || body.prm.convection_correction;
         double E = 0, nu = 0;
         if (body.prm.assumed_stress_filter && body.prm.compliance_metric &&
             !body.material->elastic_moduli(E, nu))
@@ -406,14 +408,33 @@ namespace mpm
   void
   Simulator<dim>::particle_to_grid(const transfer::P2GContent content)
   {
-    TimerOutput::Scope t(timer, "P2G");
-    transfer::particle_to_grid(background,
-                               particle_handler,
-                               bodies,
-                               current_time,
-                               content,
-                               p2g,
-                               stress_filter.get());
+    // The 1D convection correction changes the forces of this pass only,
+    // with the cells the particles are in now: the stresses are shifted
+    // for the pass and put back after it, and the body-force correction is
+    // added to the nodal forces (doc/theory.md, section 4.11).
+    const bool correct = any_convection_correction &&
+                         (content == transfer::P2GContent::force ||
+                          content == transfer::P2GContent::mass_momentum_force);
+    if (correct)
+      {
+        TimerOutput::Scope t(timer, "convection correction");
+        convection_correction.apply(background,
+                                    particle_handler,
+                                    bodies,
+                                    current_time);
+      }
+    {
+      TimerOutput::Scope t(timer, "P2G");
+      transfer::particle_to_grid(background,
+                                 particle_handler,
+                                 bodies,
+                                 current_time,
+                                 content,
+                                 p2g,
+                                 stress_filter.get());
+    }
+    if (correct)
+      convection_correction.finish(p2g);
   }
 
   template <int dim>

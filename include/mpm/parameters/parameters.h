@@ -113,6 +113,8 @@ namespace mpm
       bool compliance_metric     = false;
       filters::VolumetricSmoothing volumetric_smoothing =
         filters::VolumetricSmoothing::none;
+      bool convection_correction = false; ///< 1D only
+      bool convection_body_force = true;  ///< with convection_correction
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

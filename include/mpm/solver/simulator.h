@@ -7,6 +7,7 @@
 
 #include <mpm/benchmarks/benchmark.h>
 #include <mpm/filters/stress_filter.h>
+#include <mpm/filters/convection_correction.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
@@ -179,6 +180,9 @@ namespace mpm
     unsigned int n_global_sorts   = 0;
     bool         any_filter       = false;
     std::unique_ptr<filters::StressFilter<dim>> stress_filter;
-    double wall_start = 0, last_progress = 0;
+    /// The 1D convection correction, around the P2G passes with forces.
+    filters::ConvectionCorrection<dim> convection_correction;
+    bool                               any_convection_correction = false;
+    double                             wall_start = 0, last_progress = 0;
   };
 } // namespace mpm
