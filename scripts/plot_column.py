@@ -41,10 +41,12 @@ ax = axes[4]
 for (grid, variant), d in t[t.nu == nu].groupby(["grid", "variant"]):
     ax.loglog(d.h, d.pressure_error, "o-" if grid == "distorted" else "s--",
               label=f"{variant} ({grid})")
+ax.set_xticks([0.25, 0.5, 1], ["0.25", "0.5", "1"])
+ax.minorticks_off()
 ax.set_xlabel("h [m]")
 ax.set_ylabel("pressure error / (rho g H)")
 ax.set_title(f"nu = {nu}")
-ax.legend(fontsize=6)
+ax.legend(fontsize=6, ncol=2, loc="center right")
 fig.suptitle("Self-weight column, nu = 0.499, t = 3 s (scripts/column_study.sh)")
 fig.tight_layout()
 fig.savefig(out, dpi=110)

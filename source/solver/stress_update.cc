@@ -114,7 +114,8 @@ namespace mpm
                                double               *prop,
                                const double          h,
                                const Tensor<2, dim> &grad_v,
-                               const Tensor<2, dim> &F) {
+                               const Tensor<2, dim> &F)
+                                __attribute__((always_inline)) {
       const double J = determinant(F);
       const auto  &material = *bodies[body_of(prop)].material;
       // An inverted particle stops the run on every rank (through the
@@ -185,6 +186,23 @@ namespace mpm
         const auto         &geo   = grid.geometry(cell);
         const unsigned int *nodes = grid.nodes(cell);
         const double        h     = grid.cell_height(cell);
+        if (!any_cell && !any_node)
+          {
+            // no smoothing: one pass
+            for (auto &p : pic)
+              {
+                geo.values_and_gradients(p.get_reference_location(), N, G);
+                const Tensor<2, dim> grad_v =
+                  velocity_gradient<dim>(in, nodes, G);
+                double              *prop  = p.get_properties().data();
+                const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
+                const Tensor<2, dim> F     = F_old + dt * grad_v * F_old;
+                store_matrix<dim>(F, prop + L::F);
+                prop[L::volume] = determinant(F) * prop[L::volume0];
+                update_particle(p, prop, h, grad_v, F);
+              }
+            return;
+          }
         buffer.clear();
         if (any_cell)
           std::fill(cell_sums.begin(), cell_sums.end(), CellVolumeSums());

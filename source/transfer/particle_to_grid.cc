@@ -6,6 +6,7 @@
 #include <mpm/transfer/particle_to_grid.h>
 
 #include <memory>
+#include <type_traits>
 
 namespace mpm
 {
@@ -103,8 +104,11 @@ namespace mpm
 
       double         N[nv];
       Tensor<1, dim> G[nv];
-      for_each_cell_with_particles(
-        grid, particles, [&](const auto &cell, const auto &pic) {
+      // The cell body, compiled twice: without the filter it is the plain
+      // particle sum (no filter branches in the hot loop).
+      auto cell_body = [&](const auto filtering_tag, const auto &cell,
+                           const auto &pic) {
+          constexpr bool with_filter = decltype(filtering_tag)::value;
           const auto         &geo   = grid.geometry(cell);
           const unsigned int *nodes = grid.nodes(cell);
           bool                J0_known = false;
@@ -130,8 +134,8 @@ namespace mpm
                   // Stress: the particle's own (midpoint rule), or its
                   // share of the cell's filtered field.
                   bool by_field = false;
-                  if constexpr (has_filter)
-                    if (filtering && filter->filtered(b))
+                  if constexpr (has_filter && with_filter)
+                    if (filter->filtered(b))
                       {
                         if (!J0_known)
                           {
@@ -187,10 +191,10 @@ namespace mpm
 
           // Filtered bodies: project their stresses in this cell, then
           // the force of the projected field.
-          if constexpr (has_filter)
+          if constexpr (has_filter && with_filter)
             for (const unsigned int b : force_bodies)
               {
-                double     beta[filters::StressFilter<fdim>::n_beta];
+                double     beta[18]; // n_beta of 3D, the largest
                 double     f[nv * dim] = {};
                 const auto result = filter->filter_cell(geo, pic, b, beta);
                 if (result != filters::StressFilter<dim>::Result::unchanged)
@@ -223,7 +227,8 @@ namespace mpm
                     local[v][1 + dim + d] += f[v * dim + d];
                 field_force[b].clear();
               }
-          force_bodies.clear();
+          if constexpr (with_filter)
+            force_bodies.clear();
 
           for (unsigned int v = 0; v < nv; ++v)
             {
@@ -237,7 +242,17 @@ namespace mpm
                 for (unsigned int d = 0; d < dim; ++d)
                   node[off_f + d] += local[v][1 + dim + d];
             }
-        });
+        };
+      if (filtering)
+        for_each_cell_with_particles(
+          grid, particles, [&](const auto &cell, const auto &pic) {
+            cell_body(std::true_type(), cell, pic);
+          });
+      else
+        for_each_cell_with_particles(
+          grid, particles, [&](const auto &cell, const auto &pic) {
+            cell_body(std::false_type(), cell, pic);
+          });
       nodal.compress(VectorOperation::add);
     }
 
