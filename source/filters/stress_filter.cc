@@ -15,14 +15,21 @@ namespace mpm
       , compliance(bodies.size())
       , projections(bodies.size())
       , last_J0(bodies.size())
+      , material(bodies.size())
+      , out_of_plane_nu(bodies.size(), 0.)
     {
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           is_filtered[b] = bodies[b].prm.assumed_stress_filter;
+          material[b]    = bodies[b].material.get();
           any_filtered   = any_filtered || is_filtered[b];
           metric[b] =
             bodies[b].prm.compliance_metric ? Metric::compliance : Metric::mass;
           double E = 0, nu = 0;
+          if (dim == 2 && bodies[b].material->elastic_moduli(E, nu) &&
+              bodies[b].material->kinematic_assumption() ==
+                KinematicAssumption::plane_strain)
+            out_of_plane_nu[b] = nu;
           if constexpr (dim > 1)
             if (bodies[b].material->elastic_moduli(E, nu))
               compliance[b] = isotropic_compliance<dim>(
@@ -66,19 +73,28 @@ namespace mpm
         ++n_fallbacks;
       if (result == Result::unchanged)
         return result;
+      // Write back; the material makes each stress consistent with its
+      // internal variables (plastic models return it to the yield surface).
+      using L                  = ParticleLayout<dim>;
+      const auto  &mat         = *material[b];
+      const auto   n_history   = mat.n_history();
       for (unsigned int k = 0; k < samples.size(); ++k)
         {
-          double     *v = targets[k];
-          const auto &s = samples[k].stress;
-          v[0]          = s[0][0];
-          v[1]          = s[1][1];
-          v[5]          = s[0][1];
-          if constexpr (dim == 3)
-            {
-              v[2] = s[2][2];
-              v[3] = s[1][2];
-              v[4] = s[0][2];
-            }
+          double     *prop = targets[k];
+          const auto &s    = samples[k].stress;
+          auto        full = load_stress(prop + L::stress);
+          // plane strain: keep the elastic out-of-plane strain
+          full[2][2] += out_of_plane_nu[b] * (s[0][0] - full[0][0] +
+                                              s[dim - 1][dim - 1] -
+                                              full[dim - 1][dim - 1]);
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              full[i][j] = s[i][j];
+          if (n_history > 0)
+            mat.make_admissible(full,
+                                ArrayView<double>(prop + L::history,
+                                                  n_history));
+          store_stress(full, prop + L::stress);
         }
       return result;
       }

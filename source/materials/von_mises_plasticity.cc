@@ -105,6 +105,25 @@ namespace mpm
                                      kinematic_assumption(),
                                      stress);
 
+      return_to_yield_surface(stress, alpha);
+    }
+
+
+
+    void
+    VonMisesPlasticity::make_admissible(SymmetricTensor<2, 3>   &stress,
+                                        const ArrayView<double> &history) const
+    {
+      AssertDimension(history.size(), 1);
+      return_to_yield_surface(stress, history[0]);
+    }
+
+
+
+    void
+    VonMisesPlasticity::return_to_yield_surface(SymmetricTensor<2, 3> &stress,
+                                                double &alpha) const
+    {
       const double f = yield_function(stress, alpha);
       if (f <= 0)
         return;

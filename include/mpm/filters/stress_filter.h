@@ -92,6 +92,10 @@ namespace mpm
       std::vector<dealii::Tensor<2, dim>>                        last_J0;
       std::vector<StressSample<dim>>                             samples;
       std::vector<double *>                                      targets;
+      std::vector<const materials::Material *>                   material;
+      /// Poisson's ratio for the out-of-plane stress of plane strain, or
+      /// 0 (plane stress, 3D, or no elastic moduli).
+      std::vector<double> out_of_plane_nu;
     };
 
     template <int dim>
@@ -126,7 +130,7 @@ namespace mpm
               s.stress[0][2] = v[4];
             }
           samples.push_back(s);
-          targets.push_back(prop + L::stress);
+          targets.push_back(prop);
         }
       return project(geo, b, beta);
     }

@@ -112,6 +112,22 @@ namespace mpm
         return false;
       }
 
+      /**
+       * Make a stress that a filter has replaced consistent with the
+       * internal variables (the assumed-stress filter calls it for every
+       * stress it writes). Elastic models need nothing: their stress is
+       * their state. Plastic models return it to the elastic domain,
+       * with the plastic flow that implies. @p stress is the full 3x3
+       * Cauchy stress.
+       */
+      virtual void
+      make_admissible(SymmetricTensor<2, 3>   &stress,
+                      const ArrayView<double> &history) const
+      {
+        (void)stress;
+        (void)history;
+      }
+
       /// Reference mass density rho_0.
       double
       reference_density() const

@@ -55,6 +55,11 @@ namespace mpm
       double
       wave_speed(const Tensor<2, 3> &F) const override;
 
+      /// Radial return of a filtered stress, with the hardening it implies.
+      void
+      make_admissible(SymmetricTensor<2, 3>   &stress,
+                      const ArrayView<double> &history) const override;
+
       /// f(stress, alpha); positive outside the elastic domain.
       double
       yield_function(const SymmetricTensor<2, 3> &stress,
@@ -87,6 +92,10 @@ namespace mpm
       }
 
     private:
+      void
+      return_to_yield_surface(SymmetricTensor<2, 3> &stress,
+                              double                &alpha) const;
+
       elasticity::IsotropicConstants constants;
       double                         sigma_y = 1;
       double                         H       = 0;

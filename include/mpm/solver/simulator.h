@@ -70,6 +70,12 @@ namespace mpm
     GlobalStatistics<dim>
     statistics();
 
+    /// Apply the assumed-stress filter of the filtered bodies to the
+    /// current state: the stress the next force will be computed from
+    /// (output does this before writing). Collective-free.
+    void
+    filter_stress();
+
     /// Benchmark error columns of the current state (empty if none).
     std::vector<double>
     benchmark_values();
@@ -110,8 +116,6 @@ namespace mpm
     remap_momentum();
     void
     update_stress(const double dt);
-    void
-    filter_stress();
     void
     update_positions();
 
