@@ -2,9 +2,10 @@
 
 #include <mpm/benchmarks/benchmark.h>
 #include <mpm/benchmarks/cantilever.h>
-#include <mpm/benchmarks/self_weight_column.h>
 #include <mpm/benchmarks/convecting_bar.h>
+#include <mpm/benchmarks/self_weight_column.h>
 #include <mpm/benchmarks/spinning_disk.h>
+#include <mpm/benchmarks/thick_cylinder.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/utilities/input_error.h>
 
@@ -141,9 +142,22 @@ namespace mpm
             throw InputError(
               "Benchmark = self-weight column needs Dimension 2 or 3");
         }
+      if (name == "thick cylinder")
+        {
+          if constexpr (dim == 2)
+            return std::make_unique<ThickCylinder<dim>>(
+              constant(constants, "a", name),
+              constant(constants, "b", name),
+              constant(constants, "p", name),
+              constant(constants, "E", name),
+              constant(constants, "nu", name));
+          else
+            throw InputError("Benchmark = thick cylinder needs Dimension = 2");
+        }
       throw InputError("Benchmark = '" + name +
                        "' is unknown; known: none, axial bar, spinning disk, "
-                       "cantilever, self-weight column, convecting bar");
+                       "cantilever, self-weight column, convecting bar, "
+                       "thick cylinder");
     }
 
     template std::unique_ptr<Benchmark<1>>
