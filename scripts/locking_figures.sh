@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Regenerate every result and figure of the locking remedies
-# (doc/locking.md): the cantilever, the self-weight column and the
-# convecting bar studies into results/, their figures into doc/figures/.
-# About 10 minutes on the 2-core development machine.
+# (doc/locking.md): the cantilever, the self-weight column, the thick
+# cylinder and the convecting bar studies into results/, their figures into doc/figures/.
+# About 15 minutes on the 2-core development machine.
 # Usage: scripts/locking_figures.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,5 +13,8 @@ mkdir -p "$root/results" "$root/doc/figures"
 "$root/scripts/column_study.sh" "$root/results/column"
 /usr/bin/python3 "$root/scripts/plot_column.py" "$root/results/column" \
   "$root/doc/figures/self_weight_column.png"
+"$root/scripts/thick_cylinder_study.sh" "$root/results/thick-cylinder"
+/usr/bin/python3 "$root/scripts/plot_thick_cylinder.py" "$root/results/thick-cylinder" \
+  "$root/doc/figures/thick_cylinder.png"
 "$root/scripts/run_convecting_bar.sh" "$root/results/convecting-bar"
 cp "$root/results/convecting-bar/convecting_bar.png" "$root/doc/figures/convecting_bar.png"
