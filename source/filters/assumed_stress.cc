@@ -89,17 +89,16 @@ namespace mpm
 
     template <int dim>
     void
-    AssumedStressProjection<dim>::natural_basis(
-      const Point<dim> &xi,
-      unsigned int (&n)[n_voigt],
-      unsigned int (&col)[n_voigt][4],
-      double (&val)[n_voigt][4]) const
+    AssumedStressProjection<dim>::natural_basis(const Point<dim> &xi,
+                                                unsigned int (&n)[n_voigt],
+                                                unsigned int (&col)[n_voigt][4],
+                                                double (&val)[n_voigt][4]) const
     {
       // natural coordinates in [-1, 1]
       double r[dim];
       for (unsigned int d = 0; d < dim; ++d)
         r[d] = 2 * xi[d] - 1;
-      auto set = [&](const unsigned int a,
+      auto set = [&](const unsigned int                                     a,
                      std::initializer_list<std::pair<unsigned int, double>> t) {
         n[a] = 0;
         for (const auto &[k, v] : t)
@@ -163,11 +162,11 @@ namespace mpm
       std::vector<StressSample<dim>> &samples,
       double                         *beta_out) const
     {
-      using Matrix = Eigen::Matrix<double, n_beta, n_beta>;
-      using Vector = Eigen::Matrix<double, n_beta, 1>;
-      Matrix H     = Matrix::Zero();
-      Vector R     = Vector::Zero();
-      double total = 0;
+      using Matrix       = Eigen::Matrix<double, n_beta, n_beta>;
+      using Vector       = Eigen::Matrix<double, n_beta, 1>;
+      Matrix       H     = Matrix::Zero();
+      Vector       R     = Vector::Zero();
+      double       total = 0;
       unsigned int n[n_voigt], col[n_voigt][4];
       double       val[n_voigt][4];
       for (const auto &p : samples)

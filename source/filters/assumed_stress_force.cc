@@ -79,8 +79,8 @@ namespace mpm
     {
       box_operator.clear();
       box_extent = geo.extent;
-      double         N[n_nodes];
-      Tensor<1, dim> G[n_nodes];
+      double                 N[n_nodes];
+      Tensor<1, dim>         G[n_nodes];
       constexpr unsigned int n_beta = AssumedStressProjection<dim>::n_beta;
       for (unsigned int k = 0; k < n_points; ++k)
         {
@@ -91,8 +91,8 @@ namespace mpm
           geo.values_and_gradients(x, N, G);
           for (unsigned int b = 0; b < n_beta; ++b)
             {
-              double unit[n_beta] = {};
-              unit[b]             = 1;
+              double unit[n_beta]                 = {};
+              unit[b]                             = 1;
               const SymmetricTensor<2, dim> sigma = field.field(x, unit);
               for (unsigned int v = 0; v < n_nodes; ++v)
                 {

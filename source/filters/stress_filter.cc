@@ -33,10 +33,10 @@ namespace mpm
           if constexpr (dim > 1)
             if (bodies[b].material->elastic_moduli(E, nu))
               compliance[b] = isotropic_compliance<dim>(
-              E,
-              nu,
-              bodies[b].material->kinematic_assumption() ==
-                KinematicAssumption::plane_stress);
+                E,
+                nu,
+                bodies[b].material->kinematic_assumption() ==
+                  KinematicAssumption::plane_stress);
         }
     }
 
@@ -53,51 +53,53 @@ namespace mpm
           return Result::unchanged;
         }
       else
-      {
-      if (samples.empty())
-        return Result::unchanged;
-      Point<dim> centre;
-      for (unsigned int d = 0; d < dim; ++d)
-        centre[d] = 0.5;
-      // Cells of a uniform grid share J0: build the projection only when
-      // the geometry changes.
-      const Tensor<2, dim> J0 = geo.jacobian(centre);
-      if (!projections[b] || !(J0 == last_J0[b]))
         {
-          projections[b] = std::make_unique<AssumedStressProjection<dim>>(
-            J0, metric[b], compliance[b]);
-          last_J0[b] = J0;
+          if (samples.empty())
+            return Result::unchanged;
+          Point<dim> centre;
+          for (unsigned int d = 0; d < dim; ++d)
+            centre[d] = 0.5;
+          // Cells of a uniform grid share J0: build the projection only when
+          // the geometry changes.
+          const Tensor<2, dim> J0 = geo.jacobian(centre);
+          if (!projections[b] || !(J0 == last_J0[b]))
+            {
+              projections[b] =
+                std::make_unique<AssumedStressProjection<dim>>(J0,
+                                                               metric[b],
+                                                               compliance[b]);
+              last_J0[b] = J0;
+            }
+          const Result result = projections[b]->project(samples, beta);
+          if (result != Result::full)
+            ++n_fallbacks;
+          if (result == Result::unchanged)
+            return result;
+          // Write back; the material makes each stress consistent with its
+          // internal variables (plastic models return it to the yield surface).
+          using L               = ParticleLayout<dim>;
+          const auto &mat       = *material[b];
+          const auto  n_history = mat.n_history();
+          for (unsigned int k = 0; k < samples.size(); ++k)
+            {
+              double     *prop = targets[k];
+              const auto &s    = samples[k].stress;
+              auto        full = load_stress(prop + L::stress);
+              // plane strain: keep the elastic out-of-plane strain
+              full[2][2] += out_of_plane_nu[b] *
+                            (s[0][0] - full[0][0] + s[dim - 1][dim - 1] -
+                             full[dim - 1][dim - 1]);
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = i; j < dim; ++j)
+                  full[i][j] = s[i][j];
+              if (n_history > 0)
+                mat.make_admissible(full,
+                                    ArrayView<double>(prop + L::history,
+                                                      n_history));
+              store_stress(full, prop + L::stress);
+            }
+          return result;
         }
-      const Result result = projections[b]->project(samples, beta);
-      if (result != Result::full)
-        ++n_fallbacks;
-      if (result == Result::unchanged)
-        return result;
-      // Write back; the material makes each stress consistent with its
-      // internal variables (plastic models return it to the yield surface).
-      using L                  = ParticleLayout<dim>;
-      const auto  &mat         = *material[b];
-      const auto   n_history   = mat.n_history();
-      for (unsigned int k = 0; k < samples.size(); ++k)
-        {
-          double     *prop = targets[k];
-          const auto &s    = samples[k].stress;
-          auto        full = load_stress(prop + L::stress);
-          // plane strain: keep the elastic out-of-plane strain
-          full[2][2] += out_of_plane_nu[b] * (s[0][0] - full[0][0] +
-                                              s[dim - 1][dim - 1] -
-                                              full[dim - 1][dim - 1]);
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = i; j < dim; ++j)
-              full[i][j] = s[i][j];
-          if (n_history > 0)
-            mat.make_admissible(full,
-                                ArrayView<double>(prop + L::history,
-                                                  n_history));
-          store_stress(full, prop + L::stress);
-        }
-      return result;
-      }
     }
 
     template <int dim>

@@ -421,9 +421,9 @@ namespace mpm
       convection_body_force = prm.get_bool("Body force correction");
       compliance_metric     = prm.get("Filter metric") == "compliance";
       const std::string vs  = prm.get("Volumetric smoothing");
-      volumetric_smoothing  = vs == "cell" ? filters::VolumetricSmoothing::cell :
-                              vs == "node" ? filters::VolumetricSmoothing::node :
-                                             filters::VolumetricSmoothing::none;
+      volumetric_smoothing = vs == "cell" ? filters::VolumetricSmoothing::cell :
+                             vs == "node" ? filters::VolumetricSmoothing::node :
+                                            filters::VolumetricSmoothing::none;
       prm.leave_subsection();
       if (assumed_stress_filter && dim == 1)
         throw InputError("Locking remedies/Stress filter = assumed stress "

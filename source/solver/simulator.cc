@@ -481,12 +481,8 @@ namespace mpm
   Simulator<dim>::update_stress(const double dt)
   {
     TimerOutput::Scope t(timer, "stress update");
-    const auto         r = ::mpm::update_stress(background,
-                                        particle_handler,
-                                        bodies,
-                                        kinematics,
-                                        dt,
-                                        &volume_sums);
+    const auto         r = ::mpm::update_stress(
+      background, particle_handler, bodies, kinematics, dt, &volume_sums);
     stable_dt = r.stable_time_step;
     if (local_error.empty())
       local_error = r.error;

@@ -115,8 +115,9 @@ namespace mpm
                                const double          h,
                                const Tensor<2, dim> &grad_v,
                                const Tensor<2, dim> &F)
-                                __attribute__((always_inline)) {
-      const double J = determinant(F);
+      __attribute__((always_inline))
+    {
+      const double J        = determinant(F);
       const auto  &material = *bodies[body_of(prop)].material;
       // An inverted particle stops the run on every rank (through the
       // step's collective error check), never inside the material.
@@ -209,10 +210,10 @@ namespace mpm
         for (auto &p : pic)
           {
             geo.values_and_gradients(p.get_reference_location(), N, G);
-            Tensor<2, dim> grad_v = velocity_gradient<dim>(in, nodes, G);
-            double        *prop   = p.get_properties().data();
-            const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
-            Tensor<2, dim>       F     = F_old + dt * grad_v * F_old;
+            Tensor<2, dim>       grad_v = velocity_gradient<dim>(in, nodes, G);
+            double              *prop   = p.get_properties().data();
+            const Tensor<2, dim> F_old  = load_matrix<dim>(prop + L::F);
+            Tensor<2, dim>       F      = F_old + dt * grad_v * F_old;
             store_matrix<dim>(F, prop + L::F);
             const double J      = determinant(F);
             const double V_old  = prop[L::volume];
@@ -260,9 +261,9 @@ namespace mpm
             double *prop = p.get_properties().data();
             if (smoothing[body_of(prop)] != Smoothing::cell)
               continue;
-            auto        &[grad_v, F] = buffer[k++];
-            const auto  &sum         = cell_sums[body_of(prop)];
-            const double J           = determinant(F);
+            auto &[grad_v, F] = buffer[k++];
+            const auto  &sum  = cell_sums[body_of(prop)];
+            const double J    = determinant(F);
             if (J > 0)
               filters::smooth_volume_change<dim>(
                 grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);

@@ -1,5 +1,5 @@
-#include <mpm/filters/assumed_stress_force.h>
 #include <mpm/filters/assumed_stress.h>
+#include <mpm/filters/assumed_stress_force.h>
 #include <mpm/filters/stress_filter.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
@@ -93,8 +93,7 @@ namespace mpm
       constexpr bool has_filter = dim > 1;
       constexpr int  fdim       = dim == 1 ? 2 : dim; // no filter in 1D
       using Force               = filters::AssumedStressForce<fdim>;
-      const bool filtering      = has_filter && do_force && filter &&
-                             filter->any();
+      const bool filtering = has_filter && do_force && filter && filter->any();
       std::vector<Force>        field_force(filtering ? bodies.size() : 0);
       std::vector<unsigned int> force_bodies;
       Tensor<2, dim>            J0_inverse;
@@ -106,153 +105,152 @@ namespace mpm
       Tensor<1, dim> G[nv];
       // The cell body, compiled twice: without the filter it is the plain
       // particle sum (no filter branches in the hot loop).
-      auto cell_body = [&](const auto filtering_tag, const auto &cell,
+      auto cell_body = [&](const auto  filtering_tag,
+                           const auto &cell,
                            const auto &pic) {
-          constexpr bool with_filter = decltype(filtering_tag)::value;
-          const auto         &geo   = grid.geometry(cell);
-          const unsigned int *nodes = grid.nodes(cell);
-          bool                J0_known = false;
+        constexpr bool      with_filter = decltype(filtering_tag)::value;
+        const auto         &geo         = grid.geometry(cell);
+        const unsigned int *nodes       = grid.nodes(cell);
+        bool                J0_known    = false;
 
-          // Accumulate per cell, then scatter once.
-          double local[nv][1 + 2 * dim] = {};
-          for (const auto &p : pic)
-            {
-              const Point<dim> xi   = p.get_reference_location();
-              const double    *prop = p.get_properties().data();
-              const double     m    = prop[L::mass];
-              if (do_force)
-                geo.values_and_gradients(xi, N, G);
-              else
-                geo.values(xi, N);
+        // Accumulate per cell, then scatter once.
+        double local[nv][1 + 2 * dim] = {};
+        for (const auto &p : pic)
+          {
+            const Point<dim> xi   = p.get_reference_location();
+            const double    *prop = p.get_properties().data();
+            const double     m    = prop[L::mass];
+            if (do_force)
+              geo.values_and_gradients(xi, N, G);
+            else
+              geo.values(xi, N);
 
-              if (do_force)
-                {
-                  const unsigned int b =
-                    static_cast<unsigned int>(prop[L::body]);
-                  const double V = prop[L::volume];
+            if (do_force)
+              {
+                const unsigned int b = static_cast<unsigned int>(prop[L::body]);
+                const double       V = prop[L::volume];
 
-                  // Stress: the particle's own (midpoint rule), or its
-                  // share of the cell's filtered field.
-                  bool by_field = false;
-                  if constexpr (has_filter && with_filter)
-                    if (filter->filtered(b))
-                      {
-                        if (!J0_known)
-                          {
-                            J0_inverse = invert(geo.jacobian(centre));
-                            J0_known   = true;
-                          }
-                        if (field_force[b].empty())
-                          force_bodies.push_back(b);
-                        field_force[b].add_particle(
-                          xi, J0_inverse * current_domain<dim>(prop), V);
-                        by_field = true;
-                      }
-                  Tensor<2, dim> sigma;
-                  if (!by_field)
-                    sigma = -V * in_plane_stress<dim>(prop + L::stress);
-
-                  double ext[dim] = {};
-                  if (body_loaded[b])
+                // Stress: the particle's own (midpoint rule), or its
+                // share of the cell's filtered field.
+                bool by_field = false;
+                if constexpr (has_filter && with_filter)
+                  if (filter->filtered(b))
                     {
-                      bodies[b].body_force_at(p.get_location(),
-                                              prop + L::X,
-                                              time,
-                                              ext);
-                      for (unsigned int d = 0; d < dim; ++d)
-                        ext[d] *= m;
+                      if (!J0_known)
+                        {
+                          J0_inverse = invert(geo.jacobian(centre));
+                          J0_known   = true;
+                        }
+                      if (field_force[b].empty())
+                        force_bodies.push_back(b);
+                      field_force[b].add_particle(
+                        xi, J0_inverse * current_domain<dim>(prop), V);
+                      by_field = true;
                     }
-                  if (prop[L::traction_area] > 0)
-                    {
-                      double t[dim];
-                      bodies[b].traction_at(p.get_location(),
+                Tensor<2, dim> sigma;
+                if (!by_field)
+                  sigma = -V * in_plane_stress<dim>(prop + L::stress);
+
+                double ext[dim] = {};
+                if (body_loaded[b])
+                  {
+                    bodies[b].body_force_at(p.get_location(),
                                             prop + L::X,
                                             time,
-                                            t);
-                      for (unsigned int d = 0; d < dim; ++d)
-                        ext[d] += t[d] * prop[L::traction_area];
-                    }
-                  for (unsigned int v = 0; v < nv; ++v)
-                    {
-                      const Tensor<1, dim> f = sigma * G[v];
-                      for (unsigned int d = 0; d < dim; ++d)
-                        local[v][1 + dim + d] += f[d] + N[v] * ext[d];
-                    }
-                }
-              if (do_momentum)
+                                            ext);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      ext[d] *= m;
+                  }
+                if (prop[L::traction_area] > 0)
+                  {
+                    double t[dim];
+                    bodies[b].traction_at(p.get_location(),
+                                          prop + L::X,
+                                          time,
+                                          t);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      ext[d] += t[d] * prop[L::traction_area];
+                  }
                 for (unsigned int v = 0; v < nv; ++v)
                   {
-                    const double w = N[v] * m;
-                    local[v][0] += w;
+                    const Tensor<1, dim> f = sigma * G[v];
                     for (unsigned int d = 0; d < dim; ++d)
-                      local[v][1 + d] += w * prop[L::velocity + d];
+                      local[v][1 + dim + d] += f[d] + N[v] * ext[d];
                   }
-            }
-
-          // Filtered bodies: project their stresses in this cell, then
-          // the force of the projected field.
-          if constexpr (has_filter && with_filter)
-            for (const unsigned int b : force_bodies)
-              {
-                double     beta[18]; // n_beta of 3D, the largest
-                double     f[nv * dim] = {};
-                const auto result = filter->filter_cell(geo, pic, b, beta);
-                if (result != filters::StressFilter<dim>::Result::unchanged)
-                  field_force[b].add_internal_force(geo,
-                                                    filter->projection(b),
-                                                    beta,
-                                                    f);
-                else
-                  // nothing to project onto: the particles' own stresses
-                  for (const auto &p : pic)
-                    {
-                      const double *prop = p.get_properties().data();
-                      if (static_cast<unsigned int>(prop[L::body]) != b)
-                        continue;
-                      geo.values_and_gradients(p.get_reference_location(),
-                                               N,
-                                               G);
-                      const Tensor<2, dim> sigma =
-                        -prop[L::volume] *
-                        in_plane_stress<dim>(prop + L::stress);
-                      for (unsigned int v = 0; v < nv; ++v)
-                        {
-                          const Tensor<1, dim> fv = sigma * G[v];
-                          for (unsigned int d = 0; d < dim; ++d)
-                            f[v * dim + d] += fv[d];
-                        }
-                    }
-                for (unsigned int v = 0; v < nv; ++v)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    local[v][1 + dim + d] += f[v * dim + d];
-                field_force[b].clear();
               }
-          if constexpr (with_filter)
-            force_bodies.clear();
+            if (do_momentum)
+              for (unsigned int v = 0; v < nv; ++v)
+                {
+                  const double w = N[v] * m;
+                  local[v][0] += w;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    local[v][1 + d] += w * prop[L::velocity + d];
+                }
+          }
 
-          for (unsigned int v = 0; v < nv; ++v)
+        // Filtered bodies: project their stresses in this cell, then
+        // the force of the projected field.
+        if constexpr (has_filter && with_filter)
+          for (const unsigned int b : force_bodies)
             {
-              double *node = out + nodes[v] * nc;
-              if (do_mass)
-                node[off_m] += local[v][0];
-              if (do_momentum)
+              double     beta[18]; // n_beta of 3D, the largest
+              double     f[nv * dim] = {};
+              const auto result      = filter->filter_cell(geo, pic, b, beta);
+              if (result != filters::StressFilter<dim>::Result::unchanged)
+                field_force[b].add_internal_force(geo,
+                                                  filter->projection(b),
+                                                  beta,
+                                                  f);
+              else
+                // nothing to project onto: the particles' own stresses
+                for (const auto &p : pic)
+                  {
+                    const double *prop = p.get_properties().data();
+                    if (static_cast<unsigned int>(prop[L::body]) != b)
+                      continue;
+                    geo.values_and_gradients(p.get_reference_location(), N, G);
+                    const Tensor<2, dim> sigma =
+                      -prop[L::volume] * in_plane_stress<dim>(prop + L::stress);
+                    for (unsigned int v = 0; v < nv; ++v)
+                      {
+                        const Tensor<1, dim> fv = sigma * G[v];
+                        for (unsigned int d = 0; d < dim; ++d)
+                          f[v * dim + d] += fv[d];
+                      }
+                  }
+              for (unsigned int v = 0; v < nv; ++v)
                 for (unsigned int d = 0; d < dim; ++d)
-                  node[off_p + d] += local[v][1 + d];
-              if (do_force)
-                for (unsigned int d = 0; d < dim; ++d)
-                  node[off_f + d] += local[v][1 + dim + d];
+                  local[v][1 + dim + d] += f[v * dim + d];
+              field_force[b].clear();
             }
-        };
+        if constexpr (with_filter)
+          force_bodies.clear();
+
+        for (unsigned int v = 0; v < nv; ++v)
+          {
+            double *node = out + nodes[v] * nc;
+            if (do_mass)
+              node[off_m] += local[v][0];
+            if (do_momentum)
+              for (unsigned int d = 0; d < dim; ++d)
+                node[off_p + d] += local[v][1 + d];
+            if (do_force)
+              for (unsigned int d = 0; d < dim; ++d)
+                node[off_f + d] += local[v][1 + dim + d];
+          }
+      };
       if (filtering)
-        for_each_cell_with_particles(
-          grid, particles, [&](const auto &cell, const auto &pic) {
-            cell_body(std::true_type(), cell, pic);
-          });
+        for_each_cell_with_particles(grid,
+                                     particles,
+                                     [&](const auto &cell, const auto &pic) {
+                                       cell_body(std::true_type(), cell, pic);
+                                     });
       else
-        for_each_cell_with_particles(
-          grid, particles, [&](const auto &cell, const auto &pic) {
-            cell_body(std::false_type(), cell, pic);
-          });
+        for_each_cell_with_particles(grid,
+                                     particles,
+                                     [&](const auto &cell, const auto &pic) {
+                                       cell_body(std::false_type(), cell, pic);
+                                     });
       nodal.compress(VectorOperation::add);
     }
 

@@ -24,7 +24,8 @@ subsection Grid
   set Subdivisions = 10
 end
 subsection Time stepping
-  set Scheme = )" + scheme + R"(
+  set Scheme = )" + scheme +
+                          R"(
 end
 subsection Bodies
   subsection Body 0
@@ -49,12 +50,12 @@ subsection Bodies
     end
   end
 end)");
-      auto       &sim = *c.simulator;
-      const auto &vm  = dynamic_cast<const mpm::materials::VonMisesPlasticity &>(
+      auto             &sim = *c.simulator;
+      const auto &vm = dynamic_cast<const mpm::materials::VonMisesPlasticity &>(
         *sim.get_bodies()[0].material);
-      using L              = mpm::ParticleLayout<2>;
-      const double dt      = 0.3 * sim.stable_time_step();
-      double       worst   = -1e300;
+      using L                 = mpm::ParticleLayout<2>;
+      const double dt         = 0.3 * sim.stable_time_step();
+      double       worst      = -1e300;
       unsigned int on_surface = 0;
       for (unsigned int n = 0; n < 40; ++n)
         {

@@ -16,9 +16,9 @@
 #include <mpm/grid/grid_update.h>
 #include <mpm/solver/stress_update.h>
 
-#include "../tests.h"
-
 #include <map>
+
+#include "../tests.h"
 
 namespace
 {
@@ -74,13 +74,14 @@ subsection Bodies
       end
     end
     subsection Locking remedies
-      set Volumetric smoothing = )" + smoothing + R"(
+      set Volumetric smoothing = )" +
+                        smoothing + R"(
     end
   end
 end)");
-    auto       &sim  = *c.simulator;
-    const auto &grid = sim.grid();
-    using K          = mpm::KinematicsLayout<2>;
+    auto             &sim  = *c.simulator;
+    const auto       &grid = sim.grid();
+    using K                = mpm::KinematicsLayout<2>;
     mpm::NodalVector kinematics;
     grid.initialize_vector(kinematics, K::n_components);
     kinematics = 0.;
@@ -92,7 +93,8 @@ end)");
         for (unsigned int v = 0; v < 4; ++v)
           {
             const auto &x = geo.vertices[v];
-            double *k = kinematics.begin() + grid.nodes(cell)[v] * K::n_components;
+            double     *k =
+              kinematics.begin() + grid.nodes(cell)[v] * K::n_components;
             k[K::velocity]     = 2 * x[0] * x[0] * x[1];
             k[K::velocity + 1] = -2 * x[0] * x[1] * x[1];
           }
@@ -100,7 +102,7 @@ end)");
     const auto r = mpm::update_stress(
       grid, sim.particles(), sim.get_bodies(), kinematics, 1e-3);
     (void)r;
-    using L            = mpm::ParticleLayout<2>;
+    using L     = mpm::ParticleLayout<2>;
     double mean = 0, shear = 0;
     for (const auto &p : sim.particles())
       {
@@ -116,14 +118,14 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string elastic = R"(
+  const std::string                        elastic = R"(
       set Model = linear elastic
       set Density = 1000
       subsection Linear elastic
         set Young's modulus = 1e6
         set Poisson's ratio = 0.49
       end)";
-  const std::string fluid = R"(
+  const std::string                        fluid   = R"(
       set Model = Newtonian fluid
       set Density = 1000
       subsection Newtonian fluid
@@ -154,16 +156,17 @@ subsection Bodies
                             R"(
     end
     subsection Locking remedies
-      set Volumetric smoothing = )" + smoothing +
+      set Volumetric smoothing = )" +
+                            smoothing +
                             R"(
     end
   end
 end)");
-        auto        &sim = *c.simulator;
-        const double dt  = 0.1 * sim.stable_time_step();
+        auto             &sim = *c.simulator;
+        const double      dt  = 0.1 * sim.stable_time_step();
         sim.do_time_step(dt);
         const auto [spread, largest] = spread_of_mean_stress(sim);
-        const std::string tag = material + ", " + smoothing + ": ";
+        const std::string tag        = material + ", " + smoothing + ": ";
         // The fluid's pressure K (1/J - 1) loses digits to the cancellation
         // in 1/J - 1 ~ 1e-5: round-off there is 1e-16/1e-5.
         if (smoothing == "cell")

@@ -28,8 +28,8 @@ namespace
   void
   check_box(const unsigned int seed)
   {
-    constexpr unsigned int nv = mpm::shape_functions::n_q1<dim>;
-    std::mt19937           gen(seed);
+    constexpr unsigned int                 nv = mpm::shape_functions::n_q1<dim>;
+    std::mt19937                           gen(seed);
     std::uniform_real_distribution<double> u(0, 1);
 
     std::array<Point<dim>, nv> vertices;
@@ -100,9 +100,10 @@ namespace
     double sum[dim] = {};
     for (unsigned int i = 0; i < nv * dim; ++i)
       {
-        scale          = std::max(scale, std::abs(exact[i]));
-        error          = std::max(error, std::abs(f[i] - exact[i]));
-        midpoint_error = std::max(midpoint_error, std::abs(midpoint[i] - exact[i]));
+        scale = std::max(scale, std::abs(exact[i]));
+        error = std::max(error, std::abs(f[i] - exact[i]));
+        midpoint_error =
+          std::max(midpoint_error, std::abs(midpoint[i] - exact[i]));
         sum[i % dim] += f[i];
       }
     BOOST_TEST(error <= 1e-13 * scale);

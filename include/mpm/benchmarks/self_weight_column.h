@@ -8,9 +8,10 @@ namespace mpm
   {
     /**
      * BENCHMARKS.md section 5: laterally confined column of height H under
-     * gravity g, plane strain, base at y = 0 (constants H, rho, g, nu). Exact static state: sigma_yy = -rho g (H - Y), sigma_xx =
-     * nu/(1-nu) sigma_yy, sigma_zz = nu (sigma_xx + sigma_yy), with Y the
-     * material coordinate. Columns, all divided by rho g H:
+     * gravity g, plane strain, base at y = 0 (constants H, rho, g, nu). Exact
+     * static state: sigma_yy = -rho g (H - Y), sigma_xx = nu/(1-nu) sigma_yy,
+     * sigma_zz = nu (sigma_xx + sigma_yy), with Y the material coordinate.
+     * Columns, all divided by rho g H:
      * - sigma_yy_error: sum_p |sigma_yy - exact| V_p / sum_p V_p
      *   (Coombs et al. 2018);
      * - pressure_error: the same for p = -tr(sigma)/3;

@@ -84,7 +84,7 @@ namespace mpm
       double weight[n_points];
       bool   any = false;
 
-      mutable std::vector<Term>     box_operator;
+      mutable std::vector<Term>      box_operator;
       mutable dealii::Tensor<1, dim> box_extent;
     };
   } // namespace filters

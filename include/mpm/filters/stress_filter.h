@@ -116,8 +116,8 @@ namespace mpm
           if (static_cast<unsigned int>(prop[L::body]) != b)
             continue;
           StressSample<dim> s;
-          s.xi         = p.get_reference_location();
-          s.weight     = by_mass ? prop[L::mass] : prop[L::volume];
+          s.xi            = p.get_reference_location();
+          s.weight        = by_mass ? prop[L::mass] : prop[L::volume];
           const double *v = prop + L::stress;
           // Voigt xx yy zz yz xz xy
           s.stress[0][0] = v[0];

@@ -1,11 +1,10 @@
 #pragma once
 
-#include <mpm/filters/volumetric_smoothing.h>
-
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
+#include <mpm/filters/volumetric_smoothing.h>
 #include <mpm/materials/material.h>
 
 #include <map>
@@ -109,8 +108,8 @@ namespace mpm
       std::vector<dealii::types::boundary_id> traction_boundary_ids;
 
       /// Locking remedies of this body (doc/theory.md).
-      bool assumed_stress_filter = false;
-      bool compliance_metric     = false;
+      bool                         assumed_stress_filter = false;
+      bool                         compliance_metric     = false;
       filters::VolumetricSmoothing volumetric_smoothing =
         filters::VolumetricSmoothing::none;
       bool convection_correction = false; ///< 1D only

@@ -6,8 +6,8 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/benchmarks/benchmark.h>
-#include <mpm/filters/stress_filter.h>
 #include <mpm/filters/convection_correction.h>
+#include <mpm/filters/stress_filter.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>

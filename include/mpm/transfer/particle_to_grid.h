@@ -59,6 +59,6 @@ namespace mpm
                      const double                             time,
                      const P2GContent                         content,
                      NodalVector                             &nodal,
-                     filters::StressFilter<dim> *filter = nullptr);
+                     filters::StressFilter<dim>              *filter = nullptr);
   } // namespace transfer
 } // namespace mpm
