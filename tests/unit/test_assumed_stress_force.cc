@@ -1,10 +1,12 @@
 // The internal force of a cell's assumed-stress field (AssumedStressForce):
-// on an axis-parallel box it equals the exact integral of
+// on an axis-parallel box that its particles fill (at least 2^dim of
+// them, covering 3/4 of the cell) it equals the exact integral of
 // -sigma(xi) grad N_v over the particle domains, for any particle layout
 // and any field coefficients (checked against a 6-point Gauss rule per
 // direction in every domain, which is exact for the polynomial
-// integrand); the forces sum to zero (linear momentum); and the particle
-// midpoint rule it replaces is not exact (the check can fail).
+// integrand), and the particle midpoint rule it replaces is not (the
+// check can fail); in a sparse cell it is that particle sum; the forces
+// sum to zero (linear momentum).
 #define BOOST_TEST_MODULE assumed_stress_force
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK
@@ -24,9 +26,16 @@ using namespace mpm::filters;
 
 namespace
 {
+  /// n_particles random particles with domain half-widths (reference
+  /// coordinates) in [a_min, a_max]. A filled cell (at least 2^dim
+  /// particles covering 3/4 of it) must get the exact integral; a sparse
+  /// one the particle sum.
   template <int dim>
   void
-  check_box(const unsigned int seed)
+  check_box(const unsigned int seed,
+            const unsigned int n_particles,
+            const double       a_min,
+            const double       a_max)
   {
     constexpr unsigned int                 nv = mpm::shape_functions::n_q1<dim>;
     std::mt19937                           gen(seed);
@@ -58,18 +67,22 @@ namespace
     std::vector<double> exact(nv * dim, 0.), midpoint(nv * dim, 0.);
     double              N[nv];
     Tensor<1, dim>      G[nv];
-    for (unsigned int p = 0; p < 7; ++p)
+    double cell_volume = 1, total_volume = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      cell_volume *= extent[d];
+    for (unsigned int p = 0; p < n_particles; ++p)
       {
         Point<dim>     xi;
         Tensor<2, dim> q; // half-widths in reference coordinates
         double         V = 1;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            q[d][d] = 0.05 + 0.2 * u(gen);
+            q[d][d] = a_min + (a_max - a_min) * u(gen);
             xi[d]   = q[d][d] + (1 - 2 * q[d][d]) * u(gen);
             V *= 2 * q[d][d] * extent[d];
           }
         force.add_particle(xi, q, V);
+        total_volume += V;
         for (unsigned int k = 0; k < gauss.size(); ++k)
           {
             Point<dim> x = xi;
@@ -106,21 +119,42 @@ namespace
           std::max(midpoint_error, std::abs(midpoint[i] - exact[i]));
         sum[i % dim] += f[i];
       }
-    BOOST_TEST(error <= 1e-13 * scale);
-    BOOST_TEST(midpoint_error > 1e-4 * scale);
+    const bool filled =
+      n_particles >= (1u << dim) && total_volume >= 0.75 * cell_volume;
+    if (filled)
+      {
+        BOOST_TEST(error <= 1e-13 * scale);
+        BOOST_TEST(midpoint_error > 1e-4 * scale);
+      }
+    else
+      {
+        double from_midpoint = 0;
+        for (unsigned int i = 0; i < nv * dim; ++i)
+          from_midpoint = std::max(from_midpoint, std::abs(f[i] - midpoint[i]));
+        BOOST_TEST(from_midpoint <= 1e-13 * scale);
+      }
     for (unsigned int d = 0; d < dim; ++d)
       BOOST_TEST(std::abs(sum[d]) <= 1e-13 * scale);
   }
 } // namespace
 
-BOOST_AUTO_TEST_CASE(exact_on_boxes_2d)
+BOOST_AUTO_TEST_CASE(exact_on_filled_boxes_2d)
 {
   for (unsigned int seed = 1; seed <= 20; ++seed)
-    check_box<2>(seed);
+    check_box<2>(seed, 8, 0.2, 0.3);
 }
 
-BOOST_AUTO_TEST_CASE(exact_on_boxes_3d)
+BOOST_AUTO_TEST_CASE(exact_on_filled_boxes_3d)
 {
   for (unsigned int seed = 1; seed <= 20; ++seed)
-    check_box<3>(seed);
+    check_box<3>(seed, 12, 0.25, 0.35);
+}
+
+BOOST_AUTO_TEST_CASE(particle_sum_in_sparse_cells)
+{
+  for (unsigned int seed = 1; seed <= 20; ++seed)
+    {
+      check_box<2>(seed, 3, 0.05, 0.25);
+      check_box<3>(seed, 7, 0.05, 0.25);
+    }
 }

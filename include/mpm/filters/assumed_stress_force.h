@@ -81,8 +81,11 @@ namespace mpm
       build_box_operator(const shape_functions::Q1Cell<dim> &geo,
                          const AssumedStressProjection<dim> &field) const;
 
-      double weight[n_points];
-      bool   any = false;
+      double       weight[n_points];   ///< over the particle domains
+      double       midpoint[n_points]; ///< at the particle centres
+      bool         any         = false;
+      unsigned int n_particles = 0;
+      double       volume      = 0;
 
       mutable std::vector<Term>      box_operator;
       mutable dealii::Tensor<1, dim> box_extent;
