@@ -67,7 +67,7 @@ namespace
     std::vector<double> exact(nv * dim, 0.), midpoint(nv * dim, 0.);
     double              N[nv];
     Tensor<1, dim>      G[nv];
-    double cell_volume = 1, total_volume = 0;
+    double              cell_volume = 1, total_volume = 0;
     for (unsigned int d = 0; d < dim; ++d)
       cell_volume *= extent[d];
     for (unsigned int p = 0; p < n_particles; ++p)

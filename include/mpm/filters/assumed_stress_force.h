@@ -36,6 +36,11 @@ namespace mpm
      * then linear in the weights and in beta: on boxes a sparse operator
      * cached per cell size, on other cells the integrand evaluated at the
      * lattice points (a consistent quadrature of the smooth integrand).
+     * Only in cells the particles fill (at least 2^dim of them, covering
+     * 3/4 of the cell): in sparse cells the second moments are large
+     * against the particles' spread, the force departs from the particle
+     * quadrature of the projection and nearly incompressible bodies went
+     * unstable, so there the weights are those of the particle sum.
      */
     template <int dim>
     class AssumedStressForce
