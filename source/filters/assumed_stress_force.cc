@@ -25,10 +25,8 @@ namespace mpm
     AssumedStressForce<dim>::clear()
     {
       for (unsigned int k = 0; k < n_points; ++k)
-        weight[k] = midpoint[k] = 0;
-      any         = false;
-      n_particles = 0;
-      volume      = 0;
+        weight[k] = 0;
+      any = false;
     }
 
     template <int dim>
@@ -38,18 +36,15 @@ namespace mpm
                                           const double          V)
     {
       any = true;
-      ++n_particles;
-      volume += V;
       // 1D averages of l_0, l_1, l_2 over [c - a, c + a]: l(c) + l'' a^2/6
-      // with l'' = 4, -8, 4; l0 the values at c (the midpoint rule).
-      double l[dim][3], l0[dim][3];
+      // with l'' = 4, -8, 4.
+      double l[dim][3];
       for (unsigned int d = 0; d < dim; ++d)
         {
           double a2 = 0;
           for (unsigned int k = 0; k < dim; ++k)
             a2 += q[d][k] * q[d][k];
           lagrange(xi[d], l[d]);
-          lagrange(xi[d], l0[d]);
           const double c = 4 * a2 / 6;
           l[d][0] += c;
           l[d][1] -= 2 * c;
@@ -59,13 +54,9 @@ namespace mpm
         {
           for (unsigned int j = 0; j < 3; ++j)
             {
-              const double lj  = V * l[1][j];
-              const double lj0 = V * l0[1][j];
+              const double lj = V * l[1][j];
               for (unsigned int i = 0; i < 3; ++i)
-                {
-                  weight[i + 3 * j] += lj * l[0][i];
-                  midpoint[i + 3 * j] += lj0 * l0[0][i];
-                }
+                weight[i + 3 * j] += lj * l[0][i];
             }
         }
       else
@@ -73,13 +64,9 @@ namespace mpm
           for (unsigned int m = 0; m < 3; ++m)
             for (unsigned int j = 0; j < 3; ++j)
               {
-                const double ljm  = V * l[1][j] * l[2][m];
-                const double ljm0 = V * l0[1][j] * l0[2][m];
+                const double ljm = V * l[1][j] * l[2][m];
                 for (unsigned int i = 0; i < 3; ++i)
-                  {
-                    weight[i + 3 * j + 9 * m] += ljm * l[0][i];
-                    midpoint[i + 3 * j + 9 * m] += ljm0 * l0[0][i];
-                  }
+                  weight[i + 3 * j + 9 * m] += ljm * l[0][i];
               }
         }
     }
@@ -130,19 +117,6 @@ namespace mpm
       const double                       *beta,
       double                             *force) const
     {
-      // The domain integration needs a cell its particles fill: with
-      // fewer than 2^dim particles, or less than 3/4 of the cell covered,
-      // its second moments are large against the particles' own spread,
-      // the force no longer matches the particle quadrature of the
-      // projection, and nearly incompressible bodies go unstable
-      // (theory.md 4.8). There the particle sum (midpoint rule) is used.
-      Point<dim> centre;
-      for (unsigned int d = 0; d < dim; ++d)
-        centre[d] = 0.5;
-      const double cell_volume = std::abs(determinant(geo.jacobian(centre)));
-      const bool   filled =
-        n_particles >= (1u << dim) && volume >= 0.75 * cell_volume;
-      const double *weight = filled ? this->weight : midpoint;
       if (geo.is_box)
         {
           // Cells of one size share the operator (the field is fixed by

@@ -5,6 +5,7 @@
 #include <mpm/particles/particle_layout.h>
 #include <mpm/transfer/particle_to_grid.h>
 
+#include <algorithm>
 #include <memory>
 #include <type_traits>
 
@@ -96,8 +97,11 @@ namespace mpm
       const bool filtering = has_filter && do_force && filter && filter->any();
       std::vector<Force>        field_force(filtering ? bodies.size() : 0);
       std::vector<unsigned int> force_bodies;
-      Tensor<2, dim>            J0_inverse;
-      Point<dim>                centre;
+      std::vector<unsigned int> cell_count(filtering ? bodies.size() : 0);
+      std::vector<double>       cell_volume(filtering ? bodies.size() : 0);
+      std::vector<char> domain_integration(filtering ? bodies.size() : 0);
+      Tensor<2, dim>    J0_inverse;
+      Point<dim>        centre;
       for (unsigned int d = 0; d < dim; ++d)
         centre[d] = 0.5;
 
@@ -112,6 +116,26 @@ namespace mpm
         const auto         &geo         = grid.geometry(cell);
         const unsigned int *nodes       = grid.nodes(cell);
         bool                J0_known    = false;
+        if constexpr (has_filter && with_filter)
+          {
+            // Which filtered bodies fill this cell (AssumedStressForce::
+            // fills): count and volume first, while the particles come
+            // into cache.
+            std::fill(cell_count.begin(), cell_count.end(), 0u);
+            std::fill(cell_volume.begin(), cell_volume.end(), 0.);
+            for (const auto &p : pic)
+              {
+                const double      *prop = p.get_properties().data();
+                const unsigned int b = static_cast<unsigned int>(prop[L::body]);
+                ++cell_count[b];
+                cell_volume[b] += prop[L::volume];
+              }
+            const double volume_of_cell =
+              std::abs(determinant(geo.jacobian(centre)));
+            for (unsigned int b = 0; b < bodies.size(); ++b)
+              domain_integration[b] =
+                Force::fills(cell_count[b], cell_volume[b], volume_of_cell);
+          }
 
         // Accumulate per cell, then scatter once.
         double local[nv][1 + 2 * dim] = {};
@@ -144,7 +168,12 @@ namespace mpm
                       if (field_force[b].empty())
                         force_bodies.push_back(b);
                       field_force[b].add_particle(
-                        xi, J0_inverse * current_domain<dim>(prop), V);
+                        xi,
+                        domain_integration[b] ?
+                          Tensor<2, dim>(J0_inverse *
+                                         current_domain<dim>(prop)) :
+                          Tensor<2, dim>(),
+                        V);
                       by_field = true;
                     }
                 Tensor<2, dim> sigma;

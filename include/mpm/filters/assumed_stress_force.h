@@ -36,11 +36,11 @@ namespace mpm
      * then linear in the weights and in beta: on boxes a sparse operator
      * cached per cell size, on other cells the integrand evaluated at the
      * lattice points (a consistent quadrature of the smooth integrand).
-     * Only in cells the particles fill (at least 2^dim of them, covering
-     * 3/4 of the cell): in sparse cells the second moments are large
-     * against the particles' spread, the force departs from the particle
-     * quadrature of the projection and nearly incompressible bodies went
-     * unstable, so there the weights are those of the particle sum.
+     * Only in cells the particles fill (fills()): in sparse cells the
+     * second moments are large against the particles' spread, the force
+     * departs from the particle quadrature of the projection and nearly
+     * incompressible bodies went unstable; there the caller passes zero
+     * half-vectors, which gives the weights of the particle sum.
      */
     template <int dim>
     class AssumedStressForce
@@ -48,6 +48,15 @@ namespace mpm
     public:
       static constexpr unsigned int n_points = dim == 2 ? 9 : 27;
       static constexpr unsigned int n_nodes  = shape_functions::n_q1<dim>;
+
+      /// Whether @p n particles of total volume @p V fill a cell of volume
+      /// @p cell_volume enough for the domain integration: at least 2^dim
+      /// of them, covering 3/4 of the cell.
+      static bool
+      fills(const unsigned int n, const double V, const double cell_volume)
+      {
+        return n >= (1u << dim) && V >= 0.75 * cell_volume;
+      }
 
       /// Start a new cell.
       void
@@ -86,11 +95,8 @@ namespace mpm
       build_box_operator(const shape_functions::Q1Cell<dim> &geo,
                          const AssumedStressProjection<dim> &field) const;
 
-      double       weight[n_points];   ///< over the particle domains
-      double       midpoint[n_points]; ///< at the particle centres
-      bool         any         = false;
-      unsigned int n_particles = 0;
-      double       volume      = 0;
+      double weight[n_points];
+      bool   any = false;
 
       mutable std::vector<Term>      box_operator;
       mutable dealii::Tensor<1, dim> box_extent;
