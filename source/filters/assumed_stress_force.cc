@@ -123,8 +123,13 @@ namespace mpm
           // the cell's Jacobian, i.e. its extent).
           if (box_operator.empty() || !(geo.extent == box_extent))
             build_box_operator(geo, field);
+          constexpr unsigned int nb = AssumedStressProjection<dim>::n_beta;
+          double                 wb[n_points * nb];
+          for (unsigned int k = 0; k < n_points; ++k)
+            for (unsigned int b = 0; b < nb; ++b)
+              wb[k * nb + b] = weight[k] * beta[b];
           for (const Term &t : box_operator)
-            force[t.vd] += t.c * weight[t.k] * beta[t.b];
+            force[t.vd] += t.c * wb[t.k * nb + t.b];
           return;
         }
       double         N[n_nodes];
