@@ -149,7 +149,6 @@ namespace mpm
                                             where + "/Traction");
         layout.n_history =
           std::max(layout.n_history, body.material->n_history());
-        any_filter = any_filter || body.prm.assumed_stress_filter;
         any_convection_correction =
           any_convection_correction || body.prm.convection_correction;
         double E = 0, nu = 0;
@@ -492,7 +491,7 @@ namespace mpm
   void
   Simulator<dim>::filter_stress()
   {
-    if (!any_filter)
+    if (!stress_filter->any())
       return;
     TimerOutput::Scope t(timer, "stress filter");
     stress_filter->apply(background, particle_handler);
@@ -679,7 +678,7 @@ namespace mpm
         throw_if_any<RuntimeError>("while writing Output/Test summary file: ",
                                    problem);
       }
-    if (any_filter)
+    if (stress_filter->any())
       pcout << "  stress filter: "
             << Utilities::MPI::sum(stress_filter->n_fallbacks, comm)
             << " cell projections fell back to constant stress" << std::endl;

@@ -36,6 +36,28 @@ namespace mpm
       return grad_v;
     }
 
+    /// L_p and the deformation gradient at the end of the step,
+    /// F = (I + dt L) F_old, of the particle with properties @p prop.
+    template <int dim>
+    struct StepKinematics
+    {
+      Tensor<2, dim> grad_v, F;
+    };
+
+    template <int dim>
+    inline StepKinematics<dim>
+    step_kinematics(const double         *in,
+                    const unsigned int   *nodes,
+                    const Tensor<1, dim> *G,
+                    const double         *prop,
+                    const double          dt)
+    {
+      using L                     = ParticleLayout<dim>;
+      const Tensor<2, dim> grad_v = velocity_gradient<dim>(in, nodes, G);
+      const Tensor<2, dim> F_old  = load_matrix<dim>(prop + L::F);
+      return {grad_v, F_old + dt * grad_v * F_old};
+    }
+
     /// Per-body sums of one cell for the cell average.
     struct CellVolumeSums
     {
@@ -91,10 +113,9 @@ namespace mpm
                 if (smoothing[body_of(prop)] != Smoothing::node)
                   continue;
                 geo.values_and_gradients(p.get_reference_location(), N, G);
-                const Tensor<2, dim> grad_v =
-                  velocity_gradient<dim>(in, nodes, G);
-                const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
-                const double J = determinant(F_old + dt * grad_v * F_old);
+                const auto [grad_v, F] =
+                  step_kinematics<dim>(in, nodes, G, prop, dt);
+                const double J = determinant(F);
                 const double m = prop[L::mass];
                 for (unsigned int v = 0; v < nv; ++v)
                   {
@@ -193,11 +214,9 @@ namespace mpm
             for (auto &p : pic)
               {
                 geo.values_and_gradients(p.get_reference_location(), N, G);
-                const Tensor<2, dim> grad_v =
-                  velocity_gradient<dim>(in, nodes, G);
-                double              *prop  = p.get_properties().data();
-                const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
-                const Tensor<2, dim> F     = F_old + dt * grad_v * F_old;
+                double *prop = p.get_properties().data();
+                const auto [grad_v, F] =
+                  step_kinematics<dim>(in, nodes, G, prop, dt);
                 store_matrix<dim>(F, prop + L::F);
                 prop[L::volume] = determinant(F) * prop[L::volume0];
                 update_particle(p, prop, h, grad_v, F);
@@ -210,10 +229,8 @@ namespace mpm
         for (auto &p : pic)
           {
             geo.values_and_gradients(p.get_reference_location(), N, G);
-            Tensor<2, dim>       grad_v = velocity_gradient<dim>(in, nodes, G);
-            double              *prop   = p.get_properties().data();
-            const Tensor<2, dim> F_old  = load_matrix<dim>(prop + L::F);
-            Tensor<2, dim>       F      = F_old + dt * grad_v * F_old;
+            double *prop     = p.get_properties().data();
+            auto [grad_v, F] = step_kinematics<dim>(in, nodes, G, prop, dt);
             store_matrix<dim>(F, prop + L::F);
             const double J      = determinant(F);
             const double V_old  = prop[L::volume];

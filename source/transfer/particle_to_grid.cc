@@ -44,14 +44,8 @@ namespace mpm
       current_domain(const double *prop)
       {
         using L = ParticleLayout<dim>;
-        Tensor<2, dim> F, R;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            {
-              F[i][j] = prop[L::F + i * dim + j];
-              R[i][j] = prop[L::domain + i * dim + j];
-            }
-        return F * R;
+        return load_matrix<dim>(prop + L::F) *
+               load_matrix<dim>(prop + L::domain);
       }
     } // namespace
 

@@ -118,17 +118,10 @@ namespace mpm
           StressSample<dim> s;
           s.xi            = p.get_reference_location();
           s.weight        = by_mass ? prop[L::mass] : prop[L::volume];
-          const double *v = prop + L::stress;
-          // Voigt xx yy zz yz xz xy
-          s.stress[0][0] = v[0];
-          s.stress[1][1] = v[1];
-          s.stress[0][1] = v[5];
-          if constexpr (dim == 3)
-            {
-              s.stress[2][2] = v[2];
-              s.stress[1][2] = v[3];
-              s.stress[0][2] = v[4];
-            }
+          const auto full = load_stress(prop + L::stress);
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              s.stress[i][j] = full[i][j];
           samples.push_back(s);
           targets.push_back(prop);
         }

@@ -182,7 +182,6 @@ namespace mpm
     double                               next_output_time = 0;
     unsigned int last_output_step = dealii::numbers::invalid_unsigned_int;
     unsigned int n_global_sorts   = 0;
-    bool         any_filter       = false;
     std::unique_ptr<filters::StressFilter<dim>> stress_filter;
     /// The 1D convection correction, around the P2G passes with forces.
     filters::ConvectionCorrection<dim> convection_correction;
