@@ -42,26 +42,22 @@ namespace mpm
 
     template <int dim>
     typename StressFilter<dim>::Result
-    StressFilter<dim>::project(const shape_functions::Q1Cell<dim> &geo,
-                               const unsigned int                  b,
-                               double                             *beta)
+    StressFilter<dim>::project(const Tensor<2, dim> &J0,
+                               const unsigned int    b,
+                               double               *beta)
     {
       if constexpr (dim == 1)
         {
           // no assumed-stress field in 1D (the parameters refuse it)
-          (void)geo, (void)b, (void)beta;
+          (void)J0, (void)b, (void)beta;
           return Result::unchanged;
         }
       else
         {
           if (samples.empty())
             return Result::unchanged;
-          Point<dim> centre;
-          for (unsigned int d = 0; d < dim; ++d)
-            centre[d] = 0.5;
           // Cells of a uniform grid share J0: build the projection only when
           // the geometry changes.
-          const Tensor<2, dim> J0 = geo.jacobian(centre);
           if (!projections[b] || !(J0 == last_J0[b]))
             {
               projections[b] =
@@ -109,12 +105,16 @@ namespace mpm
     {
       if (!any_filtered)
         return;
-      double beta[n_beta];
+      double     beta[n_beta];
+      Point<dim> centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        centre[d] = 0.5;
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
+          const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
           for (unsigned int b = 0; b < is_filtered.size(); ++b)
             if (is_filtered[b])
-              filter_cell(grid.geometry(cell), pic, b, beta);
+              filter_cell(J0, pic, b, beta);
         });
     }
 

@@ -109,9 +109,11 @@ namespace mpm
         constexpr bool      with_filter = decltype(filtering_tag)::value;
         const auto         &geo         = grid.geometry(cell);
         const unsigned int *nodes       = grid.nodes(cell);
-        bool                J0_known    = false;
+        Tensor<2, dim>      J0; // filtering: the Jacobian at the centre
         if constexpr (has_filter && with_filter)
           {
+            J0         = geo.jacobian(centre);
+            J0_inverse = invert(J0);
             // Which filtered bodies fill this cell (AssumedStressForce::
             // fills): count and volume first, while the particles come
             // into cache.
@@ -124,8 +126,7 @@ namespace mpm
                 ++cell_count[b];
                 cell_volume[b] += prop[L::volume];
               }
-            const double volume_of_cell =
-              std::abs(determinant(geo.jacobian(centre)));
+            const double volume_of_cell = std::abs(determinant(J0));
             for (unsigned int b = 0; b < bodies.size(); ++b)
               domain_integration[b] =
                 Force::fills(cell_count[b], cell_volume[b], volume_of_cell);
@@ -154,11 +155,6 @@ namespace mpm
                 if constexpr (has_filter && with_filter)
                   if (filter->filtered(b))
                     {
-                      if (!J0_known)
-                        {
-                          J0_inverse = invert(geo.jacobian(centre));
-                          J0_known   = true;
-                        }
                       if (field_force[b].empty())
                         force_bodies.push_back(b);
                       field_force[b].add_particle(
@@ -218,7 +214,7 @@ namespace mpm
             {
               double     beta[18]; // n_beta of 3D, the largest
               double     f[nv * dim] = {};
-              const auto result      = filter->filter_cell(geo, pic, b, beta);
+              const auto result      = filter->filter_cell(J0, pic, b, beta);
               if (result != filters::StressFilter<dim>::Result::unchanged)
                 field_force[b].add_internal_force(geo,
                                                   filter->projection(b),

@@ -54,14 +54,15 @@ namespace mpm
 
       /**
        * Filter body @p b's particles among @p particles_in_cell (a cell
-       * with geometry @p geo); the field's coefficients go to @p beta.
+       * whose Jacobian at its centre is @p J0); the field's coefficients go
+       * to @p beta.
        */
       template <typename ParticleRange>
       Result
-      filter_cell(const shape_functions::Q1Cell<dim> &geo,
-                  const ParticleRange                &particles_in_cell,
-                  const unsigned int                  b,
-                  double                             *beta);
+      filter_cell(const dealii::Tensor<2, dim> &J0,
+                  const ParticleRange          &particles_in_cell,
+                  const unsigned int            b,
+                  double                       *beta);
 
       /// The projection (and field) filter_cell() last used for body b.
       const AssumedStressProjection<dim> &
@@ -80,9 +81,9 @@ namespace mpm
 
     private:
       Result
-      project(const shape_functions::Q1Cell<dim> &geo,
-              const unsigned int                  b,
-              double                             *beta);
+      project(const dealii::Tensor<2, dim> &J0,
+              const unsigned int            b,
+              double                       *beta);
 
       std::vector<char>                                          is_filtered;
       bool                                                       any_filtered;
@@ -101,7 +102,7 @@ namespace mpm
     template <int dim>
     template <typename ParticleRange>
     typename StressFilter<dim>::Result
-    StressFilter<dim>::filter_cell(const shape_functions::Q1Cell<dim> &geo,
+    StressFilter<dim>::filter_cell(const dealii::Tensor<2, dim> &J0,
                                    const ParticleRange &particles_in_cell,
                                    const unsigned int   b,
                                    double              *beta)
@@ -125,7 +126,7 @@ namespace mpm
           samples.push_back(s);
           targets.push_back(prop);
         }
-      return project(geo, b, beta);
+      return project(J0, b, beta);
     }
   } // namespace filters
 } // namespace mpm
