@@ -106,6 +106,26 @@ namespace mpm
           }
         cell_heights[cell->active_cell_index()] = cell->measure() / max_face;
       }
+    // Face neighbours by index, for the walks of the domain families.
+    neighbors.assign(n_cells * 2 * dim, unknown_cell);
+    for (const auto &cell : tria->active_cell_iterators())
+      {
+        if (cell->is_artificial())
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          {
+            unsigned int &n = neighbors[cell->active_cell_index() * 2 * dim + f];
+            if (cell->at_boundary(f))
+              n = outside_grid;
+            else
+              {
+                const auto next = cell->neighbor(f);
+                if (!next->has_children() && !next->is_artificial() &&
+                    next->level() == cell->level())
+                  n = next->active_cell_index();
+              }
+          }
+      }
     cartesian = Utilities::MPI::min(all_boxes ? 1 : 0, comm) == 1;
     if (cartesian)
       mapping_ptr = std::make_unique<MappingCartesian<dim>>();

@@ -263,6 +263,40 @@ namespace mpm
                              " is listed as both fixed and slip");
     }
 
+    // ------------------------------------------------------- Shape functions
+    void
+    ShapeFunctions::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Shape functions");
+      prm.declare_entry(
+        "Family",
+        "standard",
+        Patterns::Selection(shape_functions::family_pattern()),
+        "standard: Q1 at the particle; uGIMP: average over a box domain of "
+        "fixed size (axis-parallel grids only); cpGIMP: the box follows the "
+        "stretch of the particle; CPDI: average over the parallelogram "
+        "(parallelepiped) F r_i; CPDI2: over the quadrilateral (hexahedron) "
+        "of corners moved with the grid velocity. Domains come from the "
+        "body mesh (doc/theory.md, section 5).");
+      prm.declare_entry(
+        "Domain outside the grid",
+        "error",
+        Patterns::Selection("error|clamp"),
+        "What happens when a particle domain reaches outside the grid: "
+        "error stops with a message naming the particle; clamp cuts GIMP "
+        "boxes at the grid boundary and moves CPDI corners onto it.");
+      prm.leave_subsection();
+    }
+
+    void
+    ShapeFunctions::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Shape functions");
+      family = shape_functions::parse_family(prm.get("Family"));
+      clamp  = prm.get("Domain outside the grid") == "clamp";
+      prm.leave_subsection();
+    }
+
     // ------------------------------------------------------------------ Body
     template <int dim>
     void
@@ -673,6 +707,7 @@ namespace mpm
       Grid<dim>::declare_parameters(prm);
       TimeStepping::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);
+      ShapeFunctions::declare_parameters(prm);
       Output::declare_parameters(prm);
       prm.enter_subsection("Bodies");
       for (unsigned int i = 0; i < n_bodies; ++i)
@@ -721,6 +756,7 @@ namespace mpm
       grid.parse_parameters(prm);
       time.parse_parameters(prm);
       boundary.parse_parameters(prm);
+      shape_functions.parse_parameters(prm);
       output.parse_parameters(prm);
       bodies.resize(n_bodies);
       const ConstantsScope scope(constants);

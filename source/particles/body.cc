@@ -131,6 +131,13 @@ namespace mpm
                                " ...: every cell needs a positive volume");
             const Tensor<2, dim> J = geo.jacobian(to_cell(centre));
             seed.domain            = 0.5 * h * J;
+            for (unsigned int c = 0; c < Cell::n_vertices; ++c)
+              {
+                Point<dim> corner;
+                for (unsigned int d = 0; d < dim; ++d)
+                  corner[d] = (c >> d) & 1;
+                seed.corners[c] = geo.map(to_cell(corner));
+              }
 
             // Traction: sub-cells next to a loaded boundary face carry the
             // area of their part of it.

@@ -37,6 +37,11 @@ namespace mpm
       n[history + h] = h < history_names.size() ?
                          history_names[h] :
                          "history_" + std::to_string(h);
+    if (has_corners)
+      for (unsigned int c = 0; c < (1u << dim); ++c)
+        for (unsigned int d = 0; d < dim; ++d)
+          n[corners() + c * dim + d] =
+            "corner" + std::to_string(c) + "_" + axis[d];
     for (auto &s : n)
       for (auto &c : s)
         if (c == ' ')

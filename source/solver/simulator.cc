@@ -58,8 +58,16 @@ namespace mpm
     background.create(params.grid, input_folder);
     background.setup(params.boundary);
     create_bodies();
+    check_shape_functions();
     create_particles();
     stress_filter = std::make_unique<filters::StressFilter<dim>>(bodies);
+    if (params.shape_functions.family != shape_functions::Family::standard)
+      domain_functions =
+        std::make_unique<shape_functions::DomainShapeFunctions<dim>>(
+          background,
+          params.shape_functions.family,
+          params.shape_functions.clamp,
+          layout.corners());
     background.initialize_vector(p2g, transfer::P2GLayout<dim>::n_components);
     background.initialize_vector(kinematics,
                                  KinematicsLayout<dim>::n_components);
@@ -165,6 +173,25 @@ namespace mpm
 
   template <int dim>
   void
+  Simulator<dim>::check_shape_functions()
+  {
+    using shape_functions::Family;
+    const Family family = params.shape_functions.family;
+    layout.has_corners  = family == Family::cpdi2;
+    const std::string what =
+      std::string("Shape functions/Family = ") + family_name(family);
+    if (shape_functions::is_gimp(family) && !background.is_cartesian())
+      throw InputError(what +
+                       " needs a grid of axis-parallel boxes, and this grid "
+                       "has distorted cells; use CPDI or CPDI2 there");
+    if (family != Family::standard && any_convection_correction)
+      throw InputError(what + " cannot be combined with Locking remedies/"
+                              "Stress filter = convection correction, which "
+                              "is derived for standard MPM");
+  }
+
+  template <int dim>
+  void
   Simulator<dim>::initial_properties(const Body<dim>         &body,
                                      const ParticleSeed<dim> &s,
                                      const double             rho,
@@ -185,6 +212,10 @@ namespace mpm
           p[L::domain + d * dim + e] = s.domain[d][e];
       }
     p[L::traction_area] = s.traction_area;
+    if (layout.has_corners)
+      for (unsigned int c = 0; c < (1u << dim); ++c)
+        for (unsigned int d = 0; d < dim; ++d)
+          p[layout.corners() + c * dim + d] = s.corners[c][d];
     // user order: 1D xx; 2D xx yy xy [zz]; 3D xx yy zz yz xz xy
     double sigma[6] = {};
     body.initial_stress.value(s.position, 0., sigma);
@@ -424,13 +455,16 @@ namespace mpm
       }
     {
       TimerOutput::Scope t(timer, "P2G");
-      transfer::particle_to_grid(background,
-                                 particle_handler,
-                                 bodies,
-                                 current_time,
-                                 content,
-                                 p2g,
-                                 stress_filter.get());
+      const auto e = transfer::particle_to_grid(background,
+                                                particle_handler,
+                                                bodies,
+                                                current_time,
+                                                content,
+                                                p2g,
+                                                stress_filter.get(),
+                                                domain_functions.get());
+      if (local_error.empty())
+        local_error = e;
     }
     if (correct)
       convection_correction.finish(p2g);
@@ -452,8 +486,12 @@ namespace mpm
   Simulator<dim>::grid_to_particle(const double dt)
   {
     TimerOutput::Scope t(timer, "G2P");
-    const auto         e = transfer::grid_to_particle(
-      background, particle_handler, kinematics, dt, params.time.flip_fraction);
+    const auto         e = transfer::grid_to_particle(background,
+                                                  particle_handler,
+                                                  kinematics,
+                                                  dt,
+                                                  params.time.flip_fraction,
+                                                  domain_functions.get());
     if (local_error.empty())
       local_error = e;
   }
@@ -463,12 +501,16 @@ namespace mpm
   Simulator<dim>::remap_momentum()
   {
     TimerOutput::Scope t(timer, "MUSL re-map");
-    transfer::particle_to_grid(background,
-                               particle_handler,
-                               bodies,
-                               current_time,
-                               transfer::P2GContent::momentum,
-                               remap);
+    const auto e_p2g = transfer::particle_to_grid(background,
+                                                  particle_handler,
+                                                  bodies,
+                                                  current_time,
+                                                  transfer::P2GContent::momentum,
+                                                  remap,
+                                                  static_cast<filters::StressFilter<dim> *>(nullptr),
+                                                  domain_functions.get());
+    if (local_error.empty())
+      local_error = e_p2g;
     const auto e = nodal_velocity(
       background, p2g, remap, dim, 0, min_nodal_mass, kinematics);
     if (local_error.empty())
@@ -480,8 +522,13 @@ namespace mpm
   Simulator<dim>::update_stress(const double dt)
   {
     TimerOutput::Scope t(timer, "stress update");
-    const auto         r = ::mpm::update_stress(
-      background, particle_handler, bodies, kinematics, dt, &volume_sums);
+    const auto         r = ::mpm::update_stress(background,
+                                        particle_handler,
+                                        bodies,
+                                        kinematics,
+                                        dt,
+                                        &volume_sums,
+                                        domain_functions.get());
     stable_dt = r.stable_time_step;
     if (local_error.empty())
       local_error = r.error;
@@ -502,6 +549,14 @@ namespace mpm
   Simulator<dim>::update_positions()
   {
     TimerOutput::Scope t(timer, "position update");
+    if (domain_functions &&
+        domain_functions->family() == shape_functions::Family::cpdi2)
+      {
+        const auto e = transfer::move_domain_corners(
+          background, particle_handler, kinematics, last_dt, *domain_functions);
+        if (local_error.empty())
+          local_error = e;
+      }
     lost_messages.clear();
     if (!relocate_particles(background, particle_handler, comm))
       {

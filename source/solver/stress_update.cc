@@ -2,6 +2,7 @@
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/solver/stress_update.h>
 
 #include <algorithm>
@@ -72,7 +73,8 @@ namespace mpm
                 const std::vector<Body<dim>>    &bodies,
                 const NodalVector               &kinematics,
                 const double                     dt,
-                NodalVector                     *volume_scratch)
+                NodalVector                     *volume_scratch,
+                const shape_functions::DomainShapeFunctions<dim> *domains)
   {
     using L                       = ParticleLayout<dim>;
     using Smoothing               = filters::VolumetricSmoothing;
@@ -96,6 +98,47 @@ namespace mpm
       return static_cast<unsigned int>(prop[L::body]);
     };
 
+    // L_p and F_p of the step, and the cell's Q1 values N at the particle
+    // (for the node average). Standard MPM takes grad N of the cell; the
+    // domain families their stencil. False for a bad particle domain.
+    shape_functions::Stencil<dim> stencil;
+    auto kinematics_of = [&](const auto          &p,
+                             const auto          &geo,
+                             const unsigned int  *nodes,
+                             const unsigned int   cell_index,
+                             const double        *prop,
+                             StepKinematics<dim> &k) {
+      if (!domains)
+        {
+          geo.values_and_gradients(p.get_reference_location(), N, G);
+          k = step_kinematics<dim>(in, nodes, G, prop, dt);
+          return true;
+        }
+      geo.values(p.get_reference_location(), N);
+      const auto status = domains->evaluate(cell_index, p.get_reference_location(),
+                                            prop,
+                                            stencil);
+      if (status != decltype(status)::ok)
+        {
+          if (result.error.empty())
+            result.error =
+              domains->message(status, p.get_id(), p.get_location());
+          return false;
+        }
+      using K = KinematicsLayout<dim>;
+      k.grad_v = Tensor<2, dim>();
+      for (unsigned int e = 0; e < stencil.n; ++e)
+        {
+          const double *node = in + stencil.node[e] * K::n_components;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              k.grad_v[i][j] += node[K::velocity + i] * stencil.gradient[e][j];
+        }
+      const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
+      k.F                        = F_old + dt * k.grad_v * F_old;
+      return true;
+    };
+
     // Node average: m, m J and m tr L of the new state to the nodes.
     if (any_node)
       {
@@ -112,9 +155,11 @@ namespace mpm
                 const double *prop = p.get_properties().data();
                 if (smoothing[body_of(prop)] != Smoothing::node)
                   continue;
-                geo.values_and_gradients(p.get_reference_location(), N, G);
-                const auto [grad_v, F] =
-                  step_kinematics<dim>(in, nodes, G, prop, dt);
+                StepKinematics<dim> k;
+                if (!kinematics_of(
+                      p, geo, nodes, cell->active_cell_index(), prop, k))
+                  continue;
+                const auto &[grad_v, F] = k;
                 const double J = determinant(F);
                 const double m = prop[L::mass];
                 for (unsigned int v = 0; v < nv; ++v)
@@ -213,10 +258,12 @@ namespace mpm
             // no smoothing: one pass
             for (auto &p : pic)
               {
-                geo.values_and_gradients(p.get_reference_location(), N, G);
-                double *prop = p.get_properties().data();
-                const auto [grad_v, F] =
-                  step_kinematics<dim>(in, nodes, G, prop, dt);
+                double             *prop = p.get_properties().data();
+                StepKinematics<dim> k;
+                if (!kinematics_of(
+                      p, geo, nodes, cell->active_cell_index(), prop, k))
+                  continue;
+                const auto &[grad_v, F] = k;
                 store_matrix<dim>(F, prop + L::F);
                 prop[L::volume] = determinant(F) * prop[L::volume0];
                 update_particle(p, prop, h, grad_v, F);
@@ -228,9 +275,18 @@ namespace mpm
           std::fill(cell_sums.begin(), cell_sums.end(), CellVolumeSums());
         for (auto &p : pic)
           {
-            geo.values_and_gradients(p.get_reference_location(), N, G);
-            double *prop     = p.get_properties().data();
-            auto [grad_v, F] = step_kinematics<dim>(in, nodes, G, prop, dt);
+            double             *prop = p.get_properties().data();
+            StepKinematics<dim> k;
+            if (!kinematics_of(
+                  p, geo, nodes, cell->active_cell_index(), prop, k))
+              {
+                // keep the cell average's bookkeeping in step
+                if (smoothing[body_of(prop)] == Smoothing::cell)
+                  buffer.push_back({Tensor<2, dim>(),
+                                    load_matrix<dim>(prop + L::F)});
+                continue;
+              }
+            auto &[grad_v, F] = k;
             store_matrix<dim>(F, prop + L::F);
             const double J      = determinant(F);
             const double V_old  = prop[L::volume];
@@ -325,21 +381,24 @@ namespace mpm
                    const std::vector<Body<1>> &,
                    const NodalVector &,
                    double,
-                   NodalVector *);
+                   NodalVector *,
+                   const shape_functions::DomainShapeFunctions<1> *);
   template StressUpdateResult
   update_stress<2>(const BackgroundGrid<2> &,
                    Particles::ParticleHandler<2> &,
                    const std::vector<Body<2>> &,
                    const NodalVector &,
                    double,
-                   NodalVector *);
+                   NodalVector *,
+                   const shape_functions::DomainShapeFunctions<2> *);
   template StressUpdateResult
   update_stress<3>(const BackgroundGrid<3> &,
                    Particles::ParticleHandler<3> &,
                    const std::vector<Body<3>> &,
                    const NodalVector &,
                    double,
-                   NodalVector *);
+                   NodalVector *,
+                   const shape_functions::DomainShapeFunctions<3> *);
   template double
   stable_time_step<1>(const BackgroundGrid<1> &,
                       Particles::ParticleHandler<1> &,

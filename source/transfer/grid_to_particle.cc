@@ -18,8 +18,12 @@ namespace mpm
                      Particles::ParticleHandler<dim> &particles,
                      const NodalVector               &kinematics,
                      const double                     dt,
-                     const double                     flip)
+                     const double                     flip,
+                     const shape_functions::DomainShapeFunctions<dim> *domains)
     {
+      if (domains)
+        return grid_to_particle_domains(
+          grid, particles, kinematics, dt, flip, *domains);
       using L                   = ParticleLayout<dim>;
       using K                   = KinematicsLayout<dim>;
       constexpr unsigned int nv = shape_functions::n_q1<dim>;
@@ -71,18 +75,21 @@ namespace mpm
                         Particles::ParticleHandler<1> &,
                         const NodalVector &,
                         double,
-                        double);
+                        double,
+                        const shape_functions::DomainShapeFunctions<1> *);
     template std::string
     grid_to_particle<2>(const BackgroundGrid<2> &,
                         Particles::ParticleHandler<2> &,
                         const NodalVector &,
                         double,
-                        double);
+                        double,
+                        const shape_functions::DomainShapeFunctions<2> *);
     template std::string
     grid_to_particle<3>(const BackgroundGrid<3> &,
                         Particles::ParticleHandler<3> &,
                         const NodalVector &,
                         double,
-                        double);
+                        double,
+                        const shape_functions::DomainShapeFunctions<3> *);
   } // namespace transfer
 } // namespace mpm

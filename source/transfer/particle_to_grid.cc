@@ -3,6 +3,7 @@
 #include <mpm/filters/stress_filter.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/transfer/particle_to_grid.h>
 
 #include <algorithm>
@@ -17,27 +18,6 @@ namespace mpm
 
     namespace
     {
-      /// The in-plane part of the stored Voigt stress.
-      template <int dim>
-      inline Tensor<2, dim>
-      in_plane_stress(const double *s)
-      {
-        Tensor<2, dim> sigma;
-        sigma[0][0] = s[0];
-        if constexpr (dim >= 2)
-          {
-            sigma[1][1] = s[1];
-            sigma[0][1] = sigma[1][0] = s[5];
-          }
-        if constexpr (dim == 3)
-          {
-            sigma[2][2] = s[2];
-            sigma[1][2] = sigma[2][1] = s[3];
-            sigma[0][2] = sigma[2][0] = s[4];
-          }
-        return sigma;
-      }
-
       /// Half-vectors of the current particle domain, F r_i (columns).
       template <int dim>
       inline Tensor<2, dim>
@@ -50,15 +30,19 @@ namespace mpm
     } // namespace
 
     template <int dim>
-    void
+    std::string
     particle_to_grid(const BackgroundGrid<dim>       &grid,
                      Particles::ParticleHandler<dim> &particles,
                      const std::vector<Body<dim>>    &bodies,
                      const double                     time,
                      const P2GContent                 content,
                      NodalVector                     &nodal,
-                     filters::StressFilter<dim>      *filter)
+                     filters::StressFilter<dim>      *filter,
+                     const shape_functions::DomainShapeFunctions<dim> *domains)
     {
+      if (domains)
+        return particle_to_grid_domains(
+          grid, particles, bodies, time, content, nodal, filter, *domains);
       using L                              = ParticleLayout<dim>;
       constexpr unsigned int nv            = shape_functions::n_q1<dim>;
       const bool             momentum_only = content == P2GContent::momentum;
@@ -271,31 +255,35 @@ namespace mpm
                                        cell_body(std::false_type(), cell, pic);
                                      });
       nodal.compress(VectorOperation::add);
+      return {};
     }
 
-    template void
+    template std::string
     particle_to_grid<1>(const BackgroundGrid<1> &,
                         Particles::ParticleHandler<1> &,
                         const std::vector<Body<1>> &,
                         double,
                         P2GContent,
                         NodalVector &,
-                        filters::StressFilter<1> *);
-    template void
+                        filters::StressFilter<1> *,
+                        const shape_functions::DomainShapeFunctions<1> *);
+    template std::string
     particle_to_grid<2>(const BackgroundGrid<2> &,
                         Particles::ParticleHandler<2> &,
                         const std::vector<Body<2>> &,
                         double,
                         P2GContent,
                         NodalVector &,
-                        filters::StressFilter<2> *);
-    template void
+                        filters::StressFilter<2> *,
+                        const shape_functions::DomainShapeFunctions<2> *);
+    template std::string
     particle_to_grid<3>(const BackgroundGrid<3> &,
                         Particles::ParticleHandler<3> &,
                         const std::vector<Body<3>> &,
                         double,
                         P2GContent,
                         NodalVector &,
-                        filters::StressFilter<3> *);
+                        filters::StressFilter<3> *,
+                        const shape_functions::DomainShapeFunctions<3> *);
   } // namespace transfer
 } // namespace mpm

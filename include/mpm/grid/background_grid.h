@@ -82,6 +82,37 @@ namespace mpm
       return &cell_nodes[cell->active_cell_index() * n_vertices];
     }
 
+    /// The same by active cell index (owned or ghost cells).
+    const shape_functions::Q1Cell<dim> &
+    geometry(const unsigned int cell_index) const
+    {
+      return cell_geometry[cell_index];
+    }
+    const unsigned int *
+    nodes(const unsigned int cell_index) const
+    {
+      return &cell_nodes[cell_index * n_vertices];
+    }
+
+    /// face_neighbor() across a boundary face.
+    static constexpr unsigned int outside_grid =
+      dealii::numbers::invalid_unsigned_int - 1;
+    /// face_neighbor() of a neighbour this rank does not know (artificial)
+    /// or that is refined or coarser (no single cell across the face).
+    static constexpr unsigned int unknown_cell =
+      dealii::numbers::invalid_unsigned_int;
+
+    /**
+     * Active cell index of the neighbour of an owned or ghost cell across
+     * face @p face (deal.II face order), or outside_grid / unknown_cell.
+     * Lets the particle-domain families walk the grid by index.
+     */
+    unsigned int
+    face_neighbor(const unsigned int cell_index, const unsigned int face) const
+    {
+      return neighbors[cell_index * 2 * dim + face];
+    }
+
     /// Smallest height of a cell (for the CFL condition).
     double
     cell_height(const typename dealii::Triangulation<dim>::active_cell_iterator
@@ -192,6 +223,7 @@ namespace mpm
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
     std::vector<shape_functions::Q1Cell<dim>>                  cell_geometry;
     std::vector<unsigned int>                                  cell_nodes;
+    std::vector<unsigned int>                                  neighbors;
     std::vector<double>                                        cell_heights;
     std::vector<dealii::Point<dim>>                            node_positions;
     std::vector<unsigned int>   constraint_of_node;

@@ -6,6 +6,7 @@
 
 #include <mpm/filters/volumetric_smoothing.h>
 #include <mpm/materials/material.h>
+#include <mpm/shape_functions/family.h>
 
 #include <map>
 #include <string>
@@ -82,6 +83,18 @@ namespace mpm
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
+    /// The shape-function family of the transfers (doc/theory.md, 5).
+    struct ShapeFunctions
+    {
+      shape_functions::Family family = shape_functions::Family::standard;
+      bool                    clamp  = false; ///< domains cut at the grid
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
     /// One body: its geometry, particles, material and initial state.
     template <int dim>
     struct Body
@@ -148,6 +161,7 @@ namespace mpm
       Grid<dim>              grid;
       TimeStepping           time;
       BoundaryConditions     boundary;
+      ShapeFunctions         shape_functions;
       std::vector<Body<dim>> bodies;
       Output                 output;
       std::string            benchmark = "none";

@@ -8,6 +8,7 @@
 #include <mpm/parameters/parameters.h>
 #include <mpm/utilities/expression.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -86,6 +87,8 @@ namespace mpm
     dealii::Point<dim>     position;
     double                 volume = 0;
     dealii::Tensor<2, dim> domain; // column i = half-vector r_i
+    /// The sub-cell's vertices (deal.II order), for CPDI2.
+    std::array<dealii::Point<dim>, (1u << dim)> corners;
     double                 traction_area = 0;
   };
 

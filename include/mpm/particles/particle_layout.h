@@ -31,6 +31,7 @@ namespace mpm
    * |               |             | in the reference configuration (column i)|
    * | traction_area | 1           | body-boundary area carrying traction     |
    * | history       | n_history   | material internal variables              |
+   * | corners       | 2^dim dim   | CPDI2 only: current domain corners       |
    *
    * Stress is always stored with six components: 2D and 1D models keep the
    * out-of-plane normal stress that plane strain and uniaxial strain need.
@@ -52,11 +53,21 @@ namespace mpm
     static constexpr unsigned int history       = traction_area + 1;
 
     unsigned int n_history = 0;
+    bool         has_corners = false;
+
+    static constexpr unsigned int n_corner_values = (1u << dim) * dim;
+
+    /// Start of the CPDI2 corners (corner c, component d at c * dim + d).
+    unsigned int
+    corners() const
+    {
+      return history + n_history;
+    }
 
     unsigned int
     n_properties() const
     {
-      return history + n_history;
+      return history + n_history + (has_corners ? n_corner_values : 0);
     }
 
     /// Names for output, one per slot (vector components share a name).
@@ -96,6 +107,27 @@ namespace mpm
     s[0][2] = p[4];
     s[0][1] = p[5];
     return s;
+  }
+
+  /// The dim x dim (in-plane) part of the stored Voigt stress.
+  template <int dim>
+  inline dealii::Tensor<2, dim>
+  in_plane_stress(const double *s)
+  {
+    dealii::Tensor<2, dim> sigma;
+    sigma[0][0] = s[0];
+    if constexpr (dim >= 2)
+      {
+        sigma[1][1] = s[1];
+        sigma[0][1] = sigma[1][0] = s[5];
+      }
+    if constexpr (dim == 3)
+      {
+        sigma[2][2] = s[2];
+        sigma[1][2] = sigma[2][1] = s[3];
+        sigma[0][2] = sigma[2][0] = s[4];
+      }
+    return sigma;
   }
 
   template <int dim>

@@ -14,6 +14,7 @@
 #include <mpm/parameters/parameters.h>
 #include <mpm/particles/body.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/transfer/particle_to_grid.h>
 
 #include <memory>
@@ -124,6 +125,9 @@ namespace mpm
     create_bodies();
     void
     create_particles();
+    /// The family's layout needs and its checks against grid and remedies.
+    void
+    check_shape_functions();
     void
     initial_properties(const Body<dim>         &body,
                        const ParticleSeed<dim> &seed,
@@ -183,6 +187,9 @@ namespace mpm
     unsigned int last_output_step = dealii::numbers::invalid_unsigned_int;
     unsigned int n_global_sorts   = 0;
     std::unique_ptr<filters::StressFilter<dim>> stress_filter;
+    /// The particle-domain family's weights (null for standard MPM).
+    std::unique_ptr<shape_functions::DomainShapeFunctions<dim>>
+      domain_functions;
     /// The 1D convection correction, around the P2G passes with forces.
     filters::ConvectionCorrection<dim> convection_correction;
     bool                               any_convection_correction = false;

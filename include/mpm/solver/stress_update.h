@@ -8,6 +8,12 @@
 #include <string>
 #include <vector>
 
+namespace mpm::shape_functions
+{
+  template <int dim>
+  class DomainShapeFunctions;
+}
+
 namespace mpm
 {
   /// What the stress update learns about the state on the way.
@@ -29,6 +35,9 @@ namespace mpm
    * volume change (filters::smooth_volume_change): averaged over the
    * body's particles in the cell, or through the nodes, for which
    * @p volume_scratch (3 components per node) must be given.
+   *
+   * With @p domains (GIMP, CPDI) L_p comes from the family's gradients;
+   * the node average keeps the Q1 functions of the particle's cell.
    */
   template <int dim>
   StressUpdateResult
@@ -37,7 +46,9 @@ namespace mpm
                 const std::vector<Body<dim>>            &bodies,
                 const NodalVector                       &kinematics,
                 const double                             dt,
-                NodalVector *volume_scratch = nullptr);
+                NodalVector *volume_scratch = nullptr,
+                const shape_functions::DomainShapeFunctions<dim> *domains =
+                  nullptr);
 
   /// The stability limit of the current state (no update).
   template <int dim>

@@ -6,6 +6,12 @@
 
 #include <string>
 
+namespace mpm::shape_functions
+{
+  template <int dim>
+  class DomainShapeFunctions;
+}
+
 namespace mpm
 {
   namespace transfer
@@ -18,13 +24,43 @@ namespace mpm
      * with a the FLIP fraction. Particles keep their cell and reference
      * location until they are sorted again. Returns an empty string or a
      * description of the first particle with a non-finite value.
+     *
+     * With @p domains, N_ip are the family's domain averages
+     * (grid_to_particle_domains()).
      */
     template <int dim>
     std::string
-    grid_to_particle(const BackgroundGrid<dim>               &grid,
-                     dealii::Particles::ParticleHandler<dim> &particles,
-                     const NodalVector                       &kinematics,
-                     const double                             dt,
-                     const double                             flip_fraction);
+    grid_to_particle(
+      const BackgroundGrid<dim>                        &grid,
+      dealii::Particles::ParticleHandler<dim>          &particles,
+      const NodalVector                                &kinematics,
+      const double                                      dt,
+      const double                                      flip_fraction,
+      const shape_functions::DomainShapeFunctions<dim> *domains = nullptr);
+
+    /// G2P of the particle-domain families.
+    template <int dim>
+    std::string
+    grid_to_particle_domains(
+      const BackgroundGrid<dim>                        &grid,
+      dealii::Particles::ParticleHandler<dim>          &particles,
+      const NodalVector                                &kinematics,
+      const double                                      dt,
+      const double                                      flip_fraction,
+      const shape_functions::DomainShapeFunctions<dim> &domains);
+
+    /**
+     * CPDI2's domain update, with the position update at the end of the
+     * step: every corner moves by dt times the grid velocity interpolated
+     * at it (the particle centres move in G2P).
+     */
+    template <int dim>
+    std::string
+    move_domain_corners(
+      const BackgroundGrid<dim>                        &grid,
+      dealii::Particles::ParticleHandler<dim>          &particles,
+      const NodalVector                                &kinematics,
+      const double                                      dt,
+      const shape_functions::DomainShapeFunctions<dim> &domains);
   } // namespace transfer
 } // namespace mpm

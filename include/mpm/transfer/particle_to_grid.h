@@ -12,6 +12,11 @@ namespace mpm::filters
   template <int dim>
   class StressFilter;
 }
+namespace mpm::shape_functions
+{
+  template <int dim>
+  class DomainShapeFunctions;
+}
 
 namespace mpm
 {
@@ -50,15 +55,42 @@ namespace mpm
      * integrated exactly over the particle domains
      * (filters::AssumedStressForce) instead of summing the particles'
      * stresses.
+     *
+     * With @p domains (GIMP, CPDI, CPDI2) the weights are the family's
+     * domain averages and reach the nodes of every cell a particle's
+     * domain overlaps (particle_to_grid_domains()). Returns an empty
+     * string, or what went wrong with the first bad particle domain.
      */
     template <int dim>
-    void
-    particle_to_grid(const BackgroundGrid<dim>               &grid,
-                     dealii::Particles::ParticleHandler<dim> &particles,
-                     const std::vector<Body<dim>>            &bodies,
-                     const double                             time,
-                     const P2GContent                         content,
-                     NodalVector                             &nodal,
-                     filters::StressFilter<dim>              *filter = nullptr);
+    std::string
+    particle_to_grid(
+      const BackgroundGrid<dim>                          &grid,
+      dealii::Particles::ParticleHandler<dim>            &particles,
+      const std::vector<Body<dim>>                       &bodies,
+      const double                                        time,
+      const P2GContent                                    content,
+      NodalVector                                        &nodal,
+      filters::StressFilter<dim>                         *filter  = nullptr,
+      const shape_functions::DomainShapeFunctions<dim>   *domains = nullptr);
+
+    /**
+     * The P2G of the particle-domain families: per particle, the stencil
+     * of its domain (DomainShapeFunctions) scattered straight into
+     * @p nodal. Filtered bodies are projected per cell first (the
+     * particles of a cell's projection are those whose centre it holds);
+     * their force is then the projected particle stress times the
+     * family's gradients.
+     */
+    template <int dim>
+    std::string
+    particle_to_grid_domains(
+      const BackgroundGrid<dim>                        &grid,
+      dealii::Particles::ParticleHandler<dim>          &particles,
+      const std::vector<Body<dim>>                     &bodies,
+      const double                                      time,
+      const P2GContent                                  content,
+      NodalVector                                      &nodal,
+      filters::StressFilter<dim>                       *filter,
+      const shape_functions::DomainShapeFunctions<dim> &domains);
   } // namespace transfer
 } // namespace mpm

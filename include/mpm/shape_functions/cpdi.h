@@ -1,0 +1,188 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <cmath>
+
+namespace mpm
+{
+  namespace shape_functions
+  {
+    /**
+     * A particle domain given by its 2^dim corners x_c (deal.II vertex
+     * order: bit d of c is the side in direction d) and the weights that
+     * turn grid functions at the corners into the domain averages of CPDI:
+     *
+     *   S_ip = sum_c w_c N_i(x_c),   grad S_ip = sum_c g_c N_i(x_c),
+     *
+     * with w_c = (1/V) int M_c dx and g_c = (1/V) int grad M_c dx, M_c the
+     * multilinear corner functions of the domain (doc/theory.md 5.3).
+     * sum_c w_c = 1 and sum_c g_c = 0 make S a partition of unity with
+     * gradients summing to zero; sum_c g_c (x) x_c = I reproduces linear
+     * gradients exactly.
+     */
+    template <int dim>
+    struct CornerWeights
+    {
+      static constexpr unsigned int n_corners = 1u << dim;
+
+      std::array<dealii::Point<dim>, n_corners>     x;
+      std::array<double, n_corners>                 w;
+      std::array<dealii::Tensor<1, dim>, n_corners> g;
+      double                                        volume = 0;
+      /// Smallest det J / (product of edge lengths) over the corners: the
+      /// sine of the flattest corner angle, 1 for a box, <= 0 if inverted.
+      double quality = 1;
+    };
+
+    /// Below this corner quality a domain counts as collapsed.
+    constexpr double min_domain_quality = 1e-4;
+
+    namespace internal
+    {
+      template <int dim>
+      inline double
+      column_product(const dealii::Tensor<2, dim> &A)
+      {
+        double p = 1;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            double n2 = 0;
+            for (unsigned int i = 0; i < dim; ++i)
+              n2 += A[i][k] * A[i][k];
+            p *= std::sqrt(n2);
+          }
+        return p;
+      }
+
+      /// Gradients of the corner functions M_c at xi in [0,1]^dim.
+      template <int dim>
+      inline void
+      corner_gradients(const dealii::Point<dim>       &xi,
+                       std::array<dealii::Tensor<1, dim>, (1u << dim)> &dM)
+      {
+        for (unsigned int c = 0; c < (1u << dim); ++c)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              double g = ((c >> d) & 1) ? 1. : -1.;
+              for (unsigned int e = 0; e < dim; ++e)
+                if (e != d)
+                  g *= ((c >> e) & 1) ? xi[e] : 1. - xi[e];
+              dM[c][d] = g;
+            }
+      }
+    } // namespace internal
+
+    /**
+     * CPDI1: the parallelogram (parallelepiped) x_p + A s, s in
+     * [-1,1]^dim, whose columns are the current half-vectors r_i = F r_i^0.
+     * Corners x_p + A s_c; w_c = 2^-dim; g_c = A^-T s_c / 2^dim.
+     */
+    template <int dim>
+    inline void
+    cpdi1_corners(const dealii::Point<dim>     &centre,
+                  const dealii::Tensor<2, dim> &A,
+                  CornerWeights<dim>           &cw)
+    {
+      constexpr unsigned int nc    = CornerWeights<dim>::n_corners;
+      const double           det   = dealii::determinant(A);
+      const double           edges = internal::column_product(A);
+      cw.volume                    = nc * det;
+      cw.quality                   = edges > 0 ? det / edges : 0.;
+      if (!(cw.quality > min_domain_quality))
+        return;
+      const dealii::Tensor<2, dim> AinvT = dealii::transpose(dealii::invert(A));
+      for (unsigned int c = 0; c < nc; ++c)
+        {
+          dealii::Tensor<1, dim> s;
+          for (unsigned int d = 0; d < dim; ++d)
+            s[d] = ((c >> d) & 1) ? 1. : -1.;
+          cw.x[c] = centre + A * s;
+          cw.w[c] = 1. / nc;
+          cw.g[c] = (AinvT * s) / double(nc);
+        }
+    }
+
+    /**
+     * CPDI2: the multilinear domain of the tracked corners cw.x (set
+     * before the call). The integrals are polynomial of degree at most 3
+     * per direction in the reference coordinates (det J, and the cofactor
+     * of J times grad M_c), so the 2-point Gauss rule is exact.
+     */
+    template <int dim>
+    inline void
+    cpdi2_weights(CornerWeights<dim> &cw)
+    {
+      constexpr unsigned int nc = CornerWeights<dim>::n_corners;
+      using dealii::Point;
+      using dealii::Tensor;
+      std::array<Tensor<1, dim>, nc> dM;
+
+      auto jacobian = [&](const Point<dim> &xi) {
+        internal::corner_gradients<dim>(xi, dM);
+        Tensor<2, dim> J;
+        for (unsigned int c = 0; c < nc; ++c)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              J[i][j] += cw.x[c][i] * dM[c][j];
+        return J;
+      };
+
+      // Quality at the corners: convex and not flat.
+      cw.quality = 1;
+      for (unsigned int c = 0; c < nc; ++c)
+        {
+          Point<dim> xi;
+          for (unsigned int d = 0; d < dim; ++d)
+            xi[d] = (c >> d) & 1;
+          const Tensor<2, dim> J     = jacobian(xi);
+          const double         edges = internal::column_product(J);
+          cw.quality =
+            std::min(cw.quality, edges > 0 ? dealii::determinant(J) / edges : 0.);
+        }
+      if (!(cw.quality > min_domain_quality))
+        return;
+
+      const double a = 0.5 - 0.5 / std::sqrt(3.), b = 0.5 + 0.5 / std::sqrt(3.);
+      const double weight = 1. / nc; // Gauss weights on [0,1]^dim
+      cw.volume           = 0;
+      for (unsigned int c = 0; c < nc; ++c)
+        {
+          cw.w[c] = 0;
+          cw.g[c] = Tensor<1, dim>();
+        }
+      for (unsigned int q = 0; q < nc; ++q)
+        {
+          Point<dim> xi;
+          for (unsigned int d = 0; d < dim; ++d)
+            xi[d] = ((q >> d) & 1) ? b : a;
+          const Tensor<2, dim> J   = jacobian(xi); // fills dM at xi
+          const double         det = dealii::determinant(J);
+          // cofactor = det J^-T: grad_x M dV = cof(J) grad_xi M dxi
+          const Tensor<2, dim> cof =
+            det * dealii::transpose(dealii::invert(J));
+          double M[nc];
+          for (unsigned int c = 0; c < nc; ++c)
+            {
+              double m = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                m *= ((c >> d) & 1) ? xi[d] : 1. - xi[d];
+              M[c] = m;
+            }
+          cw.volume += weight * det;
+          for (unsigned int c = 0; c < nc; ++c)
+            {
+              cw.w[c] += weight * det * M[c];
+              cw.g[c] += weight * (cof * dM[c]);
+            }
+        }
+      for (unsigned int c = 0; c < nc; ++c)
+        {
+          cw.w[c] /= cw.volume;
+          cw.g[c] /= cw.volume;
+        }
+    }
+  } // namespace shape_functions
+} // namespace mpm

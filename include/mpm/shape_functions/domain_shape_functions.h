@@ -1,0 +1,131 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+
+#include <mpm/grid/background_grid.h>
+#include <mpm/shape_functions/cpdi.h>
+#include <mpm/shape_functions/family.h>
+
+#include <string>
+
+namespace mpm
+{
+  namespace shape_functions
+  {
+    /**
+     * The weights of the particle-domain families (uGIMP, cpGIMP, CPDI,
+     * CPDI2) for one particle, from its properties and the cell it is in.
+     * The domain is walked through the grid by face neighbours starting
+     * from the particle's cell, never by a global search:
+     *
+     * - GIMP (axis-parallel grids only): the box of half-widths l_d,
+     *   integrated exactly over the up to 3^dim cells it overlaps.
+     * - CPDI, CPDI2: the corners are located in their cells (the walk
+     *   crosses the face with the largest violation of 0 <= xi <= 1, as
+     *   particle relocation does) and the Q1 values there are combined
+     *   with the corner weights (cpdi.h).
+     *
+     * Ghost cells count: a domain that reaches a ghost cell adds to its
+     * nodes, and the transfers' compress() sends that to the owner.
+     */
+    template <int dim>
+    class DomainShapeFunctions
+    {
+    public:
+      enum class Status
+      {
+        ok,
+        outside_grid,  ///< part of the domain lies outside the grid
+        beyond_ghosts, ///< the domain reaches cells this rank does not know
+        too_wide,      ///< a GIMP box wider than the neighbouring cell
+        collapsed,     ///< CPDI domain inverted or nearly flat
+        lost_corner    ///< a corner not found within a few cells
+      };
+
+      /**
+       * @p clamp: clip domains at the grid boundary (GIMP boxes are cut
+       * there and averaged over the part inside; CPDI corners outside are
+       * moved to the boundary) instead of reporting outside_grid.
+       * @p corner_offset: where CPDI2's corners start in the particle
+       * properties (ParticleLayout::corners()).
+       */
+      DomainShapeFunctions(const BackgroundGrid<dim> &grid,
+                           const Family               family,
+                           const bool                 clamp,
+                           const unsigned int         corner_offset);
+
+      Family
+      family() const
+      {
+        return which;
+      }
+
+      /// Where CPDI2's corners start in the particle properties.
+      unsigned int
+      corner_slots() const
+      {
+        return corner_offset;
+      }
+
+      /**
+       * The stencil of the particle at reference coordinates @p xi
+       * (properties @p prop) in the cell with active index @p cell; for
+       * CPDI and CPDI2 also the corners with their weights (@p corners,
+       * may be null). The centre is taken from cell and xi, not from the
+       * particle's location: within a step every pass then sees the
+       * domain where it was at the start of the step, as standard MPM
+       * does with its reference coordinates.
+       */
+      Status
+      evaluate(const unsigned int        cell,
+               const dealii::Point<dim> &xi,
+               const double             *prop,
+               Stencil<dim>             &stencil,
+               CornerWeights<dim>       *corners = nullptr) const;
+
+      /**
+       * CPDI2 only: move the corners of the particle in @p cell at @p xi
+       * by dt times the grid velocity there (@p velocity: nodal values,
+       * @p stride numbers per node).
+       */
+      Status
+      move_corners(const unsigned int        cell,
+                   const dealii::Point<dim> &xi,
+                   double                   *prop,
+                   const double             *velocity,
+                   const unsigned int        stride,
+                   const double              dt) const;
+
+      /// "the domain of particle <id> at (<x>) <what went wrong>".
+      std::string
+      message(const Status                  status,
+              const unsigned long long      id,
+              const dealii::Point<dim>     &x) const;
+
+      /// GIMP's reference half-widths of a domain with half-vectors R0
+      /// (columns): the bounding box of the parallelogram, scaled to its
+      /// volume.
+      static dealii::Tensor<1, dim>
+      gimp_half_widths(const dealii::Tensor<2, dim> &R0);
+
+    private:
+      Status
+      evaluate_gimp(const unsigned int        cell,
+                    const dealii::Point<dim> &x,
+                    const double             *prop,
+                    Stencil<dim>             &stencil) const;
+
+      Status
+      locate(unsigned int              cell,
+             const dealii::Point<dim> &x,
+             const dealii::Point<dim> &start,
+             unsigned int             &found,
+             dealii::Point<dim>       &xi) const;
+
+      const BackgroundGrid<dim> &grid;
+      const Family               which;
+      const bool                 clamp;
+      const unsigned int         corner_offset;
+    };
+  } // namespace shape_functions
+} // namespace mpm

@@ -1,0 +1,97 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+
+#include <string>
+
+namespace mpm
+{
+  namespace shape_functions
+  {
+    /**
+     * The shape-function families of the transfers (doc/theory.md,
+     * section 5). Standard MPM evaluates the Q1 functions of the cell at
+     * the particle; the others average them over the particle's domain,
+     * so a particle reaches the nodes of every cell its domain overlaps.
+     */
+    enum class Family
+    {
+      standard, ///< Q1 at the particle centre
+      ugimp,    ///< box domain of fixed size (uGIMP)
+      cpgimp,   ///< box domain following the stretch (contiguous GIMP)
+      cpdi,     ///< parallelogram/parallelepiped domain F r_i (CPDI1)
+      cpdi2     ///< quadrilateral/hexahedral domain of tracked corners
+    };
+
+    /// The names used in parameter files, in the order of Family.
+    inline const char *
+    family_name(const Family f)
+    {
+      switch (f)
+        {
+          case Family::standard:
+            return "standard";
+          case Family::ugimp:
+            return "uGIMP";
+          case Family::cpgimp:
+            return "cpGIMP";
+          case Family::cpdi:
+            return "CPDI";
+          case Family::cpdi2:
+            return "CPDI2";
+        }
+      return "?";
+    }
+
+    /// The prm pattern "standard|uGIMP|cpGIMP|CPDI|CPDI2".
+    inline std::string
+    family_pattern()
+    {
+      return "standard|uGIMP|cpGIMP|CPDI|CPDI2";
+    }
+
+    inline Family
+    parse_family(const std::string &name)
+    {
+      for (const Family f : {Family::standard,
+                             Family::ugimp,
+                             Family::cpgimp,
+                             Family::cpdi,
+                             Family::cpdi2})
+        if (name == family_name(f))
+          return f;
+      return Family::standard; // the pattern has already checked the name
+    }
+
+    inline bool
+    is_gimp(const Family f)
+    {
+      return f == Family::ugimp || f == Family::cpgimp;
+    }
+
+    /**
+     * The weights of one particle: S_ip and grad S_ip for the nodes i it
+     * reaches, as a list that may name a node more than once (a node
+     * shared by two cells the domain overlaps); sums over the list are
+     * what the transfers need, so merging would only cost time.
+     *
+     * For the corner-based families (CPDI, CPDI2) entry k belongs to
+     * corner k / 2^dim and @p corner_value keeps the Q1 value of node
+     * entry k at that corner (CPDI2 moves its corners with it).
+     */
+    template <int dim>
+    struct Stencil
+    {
+      /// 3^dim cells of 2^dim nodes (GIMP) >= 2^dim corners of 2^dim (CPDI)
+      static constexpr unsigned int capacity =
+        dim == 1 ? 6 : dim == 2 ? 36 : 216;
+      static constexpr unsigned int n_corners = 1u << dim;
+
+      unsigned int           n = 0;
+      unsigned int           node[capacity];
+      double                 value[capacity];
+      dealii::Tensor<1, dim> gradient[capacity];
+      double                 corner_value[n_corners << dim];
+    };
+  } // namespace shape_functions
+} // namespace mpm

@@ -1,0 +1,336 @@
+#include <mpm/particles/particle_layout.h>
+#include <mpm/shape_functions/domain_shape_functions.h>
+#include <mpm/shape_functions/gimp.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace mpm
+{
+  namespace shape_functions
+  {
+    using namespace dealii;
+
+    template <int dim>
+    DomainShapeFunctions<dim>::DomainShapeFunctions(
+      const BackgroundGrid<dim> &grid,
+      const Family               family,
+      const bool                 clamp,
+      const unsigned int         corner_offset)
+      : grid(grid)
+      , which(family)
+      , clamp(clamp)
+      , corner_offset(corner_offset)
+    {}
+
+    template <int dim>
+    Tensor<1, dim>
+    DomainShapeFunctions<dim>::gimp_half_widths(const Tensor<2, dim> &R0)
+    {
+      Tensor<1, dim> b;
+      double         box = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          for (unsigned int k = 0; k < dim; ++k)
+            b[d] += std::abs(R0[d][k]);
+          box *= b[d];
+        }
+      // same volume as the parallelogram: |det R0| = product of l_d
+      return b * std::pow(std::abs(determinant(R0)) / box, 1. / dim);
+    }
+
+    template <int dim>
+    typename DomainShapeFunctions<dim>::Status
+    DomainShapeFunctions<dim>::locate(unsigned int      cell,
+                                      const Point<dim> &x,
+                                      const Point<dim> &start,
+                                      unsigned int     &found,
+                                      Point<dim>       &xi) const
+    {
+      using Grid = BackgroundGrid<dim>;
+      xi         = grid.geometry(cell).inverse_map(x, start);
+      for (unsigned int hop = 0; hop <= 4 * dim; ++hop)
+        {
+          if (Q1Cell<dim>::is_inside(xi))
+            {
+              found = cell;
+              return Status::ok;
+            }
+          unsigned int face  = 0;
+          double       worst = -1;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              if (-xi[d] > worst)
+                worst = -xi[d], face = 2 * d;
+              if (xi[d] - 1 > worst)
+                worst = xi[d] - 1, face = 2 * d + 1;
+            }
+          const unsigned int next = grid.face_neighbor(cell, face);
+          if (next == Grid::outside_grid)
+            {
+              if (!clamp)
+                return Status::outside_grid;
+              // Keep walking along the boundary if the point is also
+              // beyond another face; at the last cell, clip onto it.
+              bool other = false;
+              for (unsigned int d = 0; d < dim; ++d)
+                if (d != face / 2 && (xi[d] < -1e-12 || xi[d] > 1 + 1e-12))
+                  {
+                    const unsigned int f2 = xi[d] < 0 ? 2 * d : 2 * d + 1;
+                    const unsigned int n2 = grid.face_neighbor(cell, f2);
+                    if (n2 != Grid::outside_grid && n2 != Grid::unknown_cell)
+                      {
+                        cell  = n2;
+                        xi    = grid.geometry(cell).inverse_map(x, xi);
+                        other = true;
+                        break;
+                      }
+                  }
+              if (other)
+                continue;
+              for (unsigned int d = 0; d < dim; ++d)
+                xi[d] = std::min(1., std::max(0., xi[d]));
+              found = cell;
+              return Status::ok;
+            }
+          if (next == Grid::unknown_cell)
+            return Status::beyond_ghosts;
+          cell = next;
+          Point<dim> centre;
+          for (unsigned int d = 0; d < dim; ++d)
+            centre[d] = 0.5;
+          xi = grid.geometry(cell).inverse_map(x, centre);
+        }
+      return Status::lost_corner;
+    }
+
+    template <int dim>
+    typename DomainShapeFunctions<dim>::Status
+    DomainShapeFunctions<dim>::evaluate_gimp(const unsigned int cell,
+                                             const Point<dim>  &x,
+                                             const double      *prop,
+                                             Stencil<dim>      &s) const
+    {
+      using L    = ParticleLayout<dim>;
+      using Grid = BackgroundGrid<dim>;
+      Tensor<1, dim> l = gimp_half_widths(load_matrix<dim>(prop + L::domain));
+      if (which == Family::cpgimp)
+        {
+          // follow the stretch of the fibre that was along axis d
+          const Tensor<2, dim> F = load_matrix<dim>(prop + L::F);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              double n2 = 0;
+              for (unsigned int i = 0; i < dim; ++i)
+                n2 += F[i][d] * F[i][d];
+              l[d] *= std::sqrt(n2);
+            }
+        }
+
+      const auto &own = grid.geometry(cell);
+      Point<dim>  lower, upper;
+      // reach[d]: the neighbour layers needed below (bit 0) / above (bit 1)
+      unsigned int reach[dim];
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d]         = x[d] - l[d];
+          upper[d]         = x[d] + l[d];
+          const double a   = own.vertices[0][d];
+          const double b   = a + own.extent[d];
+          const double tol = 1e-10 * own.extent[d];
+          reach[d]         = 0;
+          for (unsigned int side = 0; side < 2; ++side)
+            {
+              double      &end    = side ? upper[d] : lower[d];
+              const double bound  = side ? b : a;
+              const bool   beyond = side ? end > b + tol : end < a - tol;
+              if (!beyond)
+                {
+                  // a box ending on the face (up to round-off) ends there
+                  if (side ? end > b : end < a)
+                    end = bound;
+                  continue;
+                }
+              const unsigned int n = grid.face_neighbor(cell, 2 * d + side);
+              if (n == Grid::outside_grid)
+                {
+                  if (!clamp)
+                    return Status::outside_grid;
+                  end = bound;
+                  continue;
+                }
+              if (n == Grid::unknown_cell)
+                return Status::beyond_ghosts;
+              const auto  &next = grid.geometry(n);
+              const double na   = next.vertices[0][d];
+              if (side ? end > na + next.extent[d] + tol : end < na - tol)
+                return Status::too_wide;
+              reach[d] |= 1u << side;
+            }
+        }
+      double volume = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        volume *= upper[d] - lower[d];
+      const double inverse_volume = 1. / volume;
+
+      // Every cell of the block: offsets -1, 0, +1 where needed.
+      s.n = 0;
+      for (unsigned int k = 0; k < Utilities::fixed_power<dim>(3u); ++k)
+        {
+          unsigned int c = cell;
+          bool         skip = false;
+          for (unsigned int d = 0, r = k; d < dim; ++d, r /= 3)
+            {
+              const unsigned int o = r % 3; // 0: own, 1: below, 2: above
+              if (o == 0)
+                continue;
+              if (!(reach[d] & (1u << (o - 1))))
+                {
+                  skip = true;
+                  break;
+                }
+              c = grid.face_neighbor(c, 2 * d + (o - 1));
+              if (c == Grid::outside_grid || c == Grid::unknown_cell)
+                return c == Grid::outside_grid ? Status::outside_grid :
+                                                 Status::beyond_ghosts;
+            }
+          if (!skip)
+            add_gimp_cell<dim>(
+              grid.geometry(c), grid.nodes(c), lower, upper, inverse_volume, s);
+        }
+      return Status::ok;
+    }
+
+    template <int dim>
+    typename DomainShapeFunctions<dim>::Status
+    DomainShapeFunctions<dim>::evaluate(const unsigned int  cell,
+                                        const Point<dim>   &xi,
+                                        const double       *prop,
+                                        Stencil<dim>       &s,
+                                        CornerWeights<dim> *corners) const
+    {
+      using L            = ParticleLayout<dim>;
+      const Point<dim> x = grid.geometry(cell).map(xi);
+      if (is_gimp(which))
+        return evaluate_gimp(cell, x, prop, s);
+
+      CornerWeights<dim>  local;
+      CornerWeights<dim> &cw = corners ? *corners : local;
+      if (which == Family::cpdi)
+        cpdi1_corners<dim>(x,
+                           load_matrix<dim>(prop + L::F) *
+                             load_matrix<dim>(prop + L::domain),
+                           cw);
+      else
+        {
+          for (unsigned int c = 0; c < CornerWeights<dim>::n_corners; ++c)
+            for (unsigned int d = 0; d < dim; ++d)
+              cw.x[c][d] = prop[corner_offset + c * dim + d];
+          cpdi2_weights<dim>(cw);
+        }
+      if (!(cw.quality > min_domain_quality))
+        return Status::collapsed;
+
+      constexpr unsigned int nv = n_q1<dim>;
+      s.n                       = 0;
+      for (unsigned int c = 0; c < CornerWeights<dim>::n_corners; ++c)
+        {
+          unsigned int corner_cell;
+          Point<dim>   corner_xi;
+          const Status status = locate(cell, cw.x[c], xi, corner_cell, corner_xi);
+          if (status != Status::ok)
+            return status;
+          double N[nv];
+          Q1Cell<dim>::values(corner_xi, N);
+          const unsigned int *nodes = grid.nodes(corner_cell);
+          for (unsigned int v = 0; v < nv; ++v)
+            {
+              const unsigned int k = s.n++;
+              s.node[k]            = nodes[v];
+              s.value[k]           = cw.w[c] * N[v];
+              s.gradient[k]        = N[v] * cw.g[c];
+              s.corner_value[k]    = N[v];
+            }
+        }
+      return Status::ok;
+    }
+
+    template <int dim>
+    typename DomainShapeFunctions<dim>::Status
+    DomainShapeFunctions<dim>::move_corners(const unsigned int cell,
+                                            const Point<dim>  &xi,
+                                            double            *prop,
+                                            const double      *velocity,
+                                            const unsigned int stride,
+                                            const double       dt) const
+    {
+      constexpr unsigned int nv = n_q1<dim>;
+      Point<dim>             moved[1u << dim];
+      for (unsigned int c = 0; c < (1u << dim); ++c)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            moved[c][d] = prop[corner_offset + c * dim + d];
+          unsigned int corner_cell;
+          Point<dim>   corner_xi;
+          const Status status =
+            locate(cell, moved[c], xi, corner_cell, corner_xi);
+          if (status != Status::ok)
+            return status;
+          double N[nv];
+          Q1Cell<dim>::values(corner_xi, N);
+          const unsigned int *nodes = grid.nodes(corner_cell);
+          for (unsigned int v = 0; v < nv; ++v)
+            for (unsigned int d = 0; d < dim; ++d)
+              moved[c][d] += dt * N[v] * velocity[nodes[v] * stride + d];
+        }
+      for (unsigned int c = 0; c < (1u << dim); ++c)
+        for (unsigned int d = 0; d < dim; ++d)
+          prop[corner_offset + c * dim + d] = moved[c][d];
+      return Status::ok;
+    }
+
+    template <int dim>
+    std::string
+    DomainShapeFunctions<dim>::message(const Status             status,
+                                       const unsigned long long id,
+                                       const Point<dim>        &x) const
+    {
+      std::ostringstream s;
+      s << "the " << family_name(which) << " domain of particle " << id
+        << " at (" << x << ") ";
+      switch (status)
+        {
+          case Status::ok:
+            s << "is fine";
+            break;
+          case Status::outside_grid:
+            s << "reaches outside the grid (enlarge the grid, or set Shape "
+                 "functions/Domain outside the grid = clamp to cut domains "
+                 "at the grid boundary)";
+            break;
+          case Status::beyond_ghosts:
+            s << "reaches beyond the ghost cells of this MPI rank (the "
+                 "domain is larger than a cell: refine less, or use more "
+                 "particles per cell)";
+            break;
+          case Status::too_wide:
+            s << "is wider than the neighbouring cell (GIMP domains may "
+                 "overlap at most one neighbour per direction)";
+            break;
+          case Status::collapsed:
+            s << "is inverted or collapsed (a corner angle with sine below "
+              << min_domain_quality << ")";
+            break;
+          case Status::lost_corner:
+            s << "has a corner that was not found within " << 4 * dim
+              << " cells of the particle";
+            break;
+        }
+      return s.str();
+    }
+
+    template class DomainShapeFunctions<1>;
+    template class DomainShapeFunctions<2>;
+    template class DomainShapeFunctions<3>;
+  } // namespace shape_functions
+} // namespace mpm

@@ -1,0 +1,129 @@
+#include <mpm/grid/grid_update.h>
+#include <mpm/particles/cell_loop.h>
+#include <mpm/particles/particle_layout.h>
+#include <mpm/shape_functions/domain_shape_functions.h>
+#include <mpm/transfer/grid_to_particle.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace mpm
+{
+  namespace transfer
+  {
+    using namespace dealii;
+
+    template <int dim>
+    std::string
+    grid_to_particle_domains(
+      const BackgroundGrid<dim>                        &grid,
+      Particles::ParticleHandler<dim>                  &particles,
+      const NodalVector                                &kinematics,
+      const double                                      dt,
+      const double                                      flip,
+      const shape_functions::DomainShapeFunctions<dim> &domains)
+    {
+      using L      = ParticleLayout<dim>;
+      using K      = KinematicsLayout<dim>;
+      using Status = typename shape_functions::DomainShapeFunctions<dim>::Status;
+      const double *in        = kinematics.begin();
+      std::string   error;
+      shape_functions::Stencil<dim>       st;
+      for_each_cell_with_particles(
+        grid, particles, [&](const auto &cell, const auto &pic) {
+          const unsigned int index = cell->active_cell_index();
+          for (auto &p : pic)
+            {
+              double      *prop   = p.get_properties().data();
+              const Status status = domains.evaluate(index, p.get_reference_location(),
+                                                     prop,
+                                                     st);
+              if (status != Status::ok)
+                {
+                  if (error.empty())
+                    error =
+                      domains.message(status, p.get_id(), p.get_location());
+                  continue;
+                }
+              double v_grid[dim] = {}, dv[dim] = {};
+              for (unsigned int k = 0; k < st.n; ++k)
+                {
+                  const double *node = in + st.node[k] * K::n_components;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      v_grid[d] += st.value[k] * node[K::velocity + d];
+                      dv[d] += st.value[k] * node[K::increment + d];
+                    }
+                }
+              Point<dim> x  = p.get_location();
+              bool       ok = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  double &vp = prop[L::velocity + d];
+                  vp         = flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
+                  x[d] += dt * v_grid[d];
+                  ok = ok && std::isfinite(vp) && std::isfinite(x[d]);
+                }
+              if (!ok && error.empty())
+                {
+                  std::ostringstream s;
+                  s << "non-finite velocity or position of particle "
+                    << p.get_id() << " near (" << p.get_location() << ")";
+                  error = s.str();
+                }
+              p.set_location(x);
+            }
+        });
+      return error;
+    }
+
+    template <int dim>
+    std::string
+    move_domain_corners(
+      const BackgroundGrid<dim>                        &grid,
+      Particles::ParticleHandler<dim>                  &particles,
+      const NodalVector                                &kinematics,
+      const double                                      dt,
+      const shape_functions::DomainShapeFunctions<dim> &domains)
+    {
+      using K      = KinematicsLayout<dim>;
+      using Status = typename shape_functions::DomainShapeFunctions<dim>::Status;
+      std::string error;
+      for_each_cell_with_particles(
+        grid, particles, [&](const auto &cell, const auto &pic) {
+          for (auto &p : pic)
+            {
+              const Status status =
+                domains.move_corners(cell->active_cell_index(),
+                                     p.get_reference_location(),
+                                     p.get_properties().data(),
+                                     kinematics.begin() + K::velocity,
+                                     K::n_components,
+                                     dt);
+              if (status != Status::ok && error.empty())
+                error = domains.message(status, p.get_id(), p.get_location());
+            }
+        });
+      return error;
+    }
+
+#define MPM_INSTANTIATE(d)                                          \
+  template std::string grid_to_particle_domains<d>(                 \
+    const BackgroundGrid<d> &,                                      \
+    Particles::ParticleHandler<d> &,                                \
+    const NodalVector &,                                            \
+    double,                                                         \
+    double,                                                         \
+    const shape_functions::DomainShapeFunctions<d> &);            \
+  template std::string move_domain_corners<d>(                      \
+    const BackgroundGrid<d> &,                                      \
+    Particles::ParticleHandler<d> &,                                \
+    const NodalVector &,                                            \
+    double,                                                         \
+    const shape_functions::DomainShapeFunctions<d> &);
+    MPM_INSTANTIATE(1)
+    MPM_INSTANTIATE(2)
+    MPM_INSTANTIATE(3)
+#undef MPM_INSTANTIATE
+  } // namespace transfer
+} // namespace mpm

@@ -1,0 +1,149 @@
+#include <mpm/filters/stress_filter.h>
+#include <mpm/particles/cell_loop.h>
+#include <mpm/particles/particle_layout.h>
+#include <mpm/shape_functions/domain_shape_functions.h>
+#include <mpm/transfer/particle_to_grid.h>
+
+namespace mpm
+{
+  namespace transfer
+  {
+    using namespace dealii;
+
+    template <int dim>
+    std::string
+    particle_to_grid_domains(
+      const BackgroundGrid<dim>                        &grid,
+      Particles::ParticleHandler<dim>                  &particles,
+      const std::vector<Body<dim>>                     &bodies,
+      const double                                      time,
+      const P2GContent                                  content,
+      NodalVector                                      &nodal,
+      filters::StressFilter<dim>                       *filter,
+      const shape_functions::DomainShapeFunctions<dim> &domains)
+    {
+      using L                  = ParticleLayout<dim>;
+      using Status             = typename shape_functions::
+        DomainShapeFunctions<dim>::Status;
+      const bool momentum_only = content == P2GContent::momentum;
+      const unsigned int nc =
+        momentum_only ? dim : P2GLayout<dim>::n_components;
+      const unsigned int off_p   = momentum_only ? 0 : 1;
+      const unsigned int off_f   = 1 + dim;
+      const bool         do_mass = content == P2GContent::mass_momentum_force ||
+                           content == P2GContent::mass_momentum;
+      const bool do_momentum = content != P2GContent::force;
+      const bool do_force    = content == P2GContent::mass_momentum_force ||
+                            content == P2GContent::force;
+      const bool filtering = dim > 1 && do_force && filter && filter->any();
+
+      std::vector<char> body_loaded(bodies.size()), present(bodies.size());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        body_loaded[b] = bodies[b].has_body_force();
+
+      if (content != P2GContent::force)
+        nodal = 0.;
+      double *const out = nodal.begin();
+      std::string   error;
+      Point<dim>    centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        centre[d] = 0.5;
+      shape_functions::Stencil<dim> st;
+
+      for_each_cell_with_particles(
+        grid, particles, [&](const auto &cell, const auto &pic) {
+          if constexpr (dim > 1)
+            if (filtering)
+            {
+              // Project the filtered bodies' stresses of this cell first;
+              // the force below then uses the projected stresses.
+              std::fill(present.begin(), present.end(), 0);
+              for (const auto &p : pic)
+                present[static_cast<unsigned int>(
+                  p.get_properties()[L::body])] = 1;
+              const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
+              double               beta[18];
+              for (unsigned int b = 0; b < bodies.size(); ++b)
+                if (present[b] && filter->filtered(b))
+                  filter->filter_cell(J0, pic, b, beta);
+            }
+          const unsigned int index = cell->active_cell_index();
+          for (const auto &p : pic)
+            {
+              const double *prop = p.get_properties().data();
+              const Status  status =
+                domains.evaluate(index, p.get_reference_location(),
+                                 prop,
+                                 st);
+              if (status != Status::ok)
+                {
+                  if (error.empty())
+                    error =
+                      domains.message(status, p.get_id(), p.get_location());
+                  continue;
+                }
+              const double m = prop[L::mass];
+              Tensor<2, dim> sigma;
+              double         ext[dim] = {};
+              if (do_force)
+                {
+                  const unsigned int b = static_cast<unsigned int>(prop[L::body]);
+                  sigma = -prop[L::volume] * in_plane_stress<dim>(prop + L::stress);
+                  if (body_loaded[b])
+                    {
+                      bodies[b].body_force_at(p.get_location(),
+                                              prop + L::X,
+                                              time,
+                                              ext);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        ext[d] *= m;
+                    }
+                  if (prop[L::traction_area] > 0)
+                    {
+                      double t[dim];
+                      bodies[b].traction_at(p.get_location(),
+                                            prop + L::X,
+                                            time,
+                                            t);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        ext[d] += t[d] * prop[L::traction_area];
+                    }
+                }
+              for (unsigned int k = 0; k < st.n; ++k)
+                {
+                  double      *node = out + st.node[k] * nc;
+                  const double S    = st.value[k];
+                  if (do_mass)
+                    node[0] += S * m;
+                  if (do_momentum)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      node[off_p + d] += S * m * prop[L::velocity + d];
+                  if (do_force)
+                    {
+                      const Tensor<1, dim> f = sigma * st.gradient[k];
+                      for (unsigned int d = 0; d < dim; ++d)
+                        node[off_f + d] += f[d] + S * ext[d];
+                    }
+                }
+            }
+        });
+      nodal.compress(VectorOperation::add);
+      return error;
+    }
+
+#define MPM_INSTANTIATE(d)                                         \
+  template std::string particle_to_grid_domains<d>(                \
+    const BackgroundGrid<d> &,                                     \
+    Particles::ParticleHandler<d> &,                               \
+    const std::vector<Body<d>> &,                                  \
+    double,                                                        \
+    P2GContent,                                                    \
+    NodalVector &,                                                 \
+    filters::StressFilter<d> *,                                    \
+    const shape_functions::DomainShapeFunctions<d> &);
+    MPM_INSTANTIATE(1)
+    MPM_INSTANTIATE(2)
+    MPM_INSTANTIATE(3)
+#undef MPM_INSTANTIATE
+  } // namespace transfer
+} // namespace mpm
