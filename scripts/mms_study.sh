@@ -31,7 +31,7 @@ while [ $# -gt 0 ]; do
   case $1 in
     --3d) dim=3 ;;
     --families) families=$2; shift ;;
-    -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
     *) out=$1 ;;
   esac
   shift
@@ -50,6 +50,8 @@ mpm=${MPM:-$root/build/mpm}
 np=${NP:-1}
 run=("$mpm")
 if [ "$np" -gt 1 ]; then
+  # OpenMPI refuses to run as root unless told (CI, containers)
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
   run=(mpirun -np "$np" "$mpm")
 fi
 # the physical constants of the benchmark file (only G varies here)
