@@ -3,6 +3,7 @@
 #include <mpm/benchmarks/benchmark.h>
 #include <mpm/benchmarks/cantilever.h>
 #include <mpm/benchmarks/convecting_bar.h>
+#include <mpm/benchmarks/manufactured_solution.h>
 #include <mpm/benchmarks/self_weight_column.h>
 #include <mpm/benchmarks/spinning_disk.h>
 #include <mpm/benchmarks/thick_cylinder.h>
@@ -154,10 +155,29 @@ namespace mpm
           else
             throw InputError("Benchmark = thick cylinder needs Dimension = 2");
         }
+      if (name == "manufactured solution")
+        {
+          if constexpr (dim >= 2)
+            {
+              const double G = constant(constants, "G", name);
+              if (!(G > 0))
+                throw InputError("Benchmark = manufactured solution needs "
+                                 "the constant G > 0 (errors are divided by "
+                                 "it)");
+              return std::make_unique<ManufacturedSolution<dim>>(
+                G,
+                constant(constants, "E", name),
+                constant(constants, "nu", name),
+                constant(constants, "rho", name));
+            }
+          else
+            throw InputError(
+              "Benchmark = manufactured solution needs Dimension 2 or 3");
+        }
       throw InputError("Benchmark = '" + name +
                        "' is unknown; known: none, axial bar, spinning disk, "
                        "cantilever, self-weight column, convecting bar, "
-                       "thick cylinder");
+                       "thick cylinder, manufactured solution");
     }
 
     template std::unique_ptr<Benchmark<1>>
