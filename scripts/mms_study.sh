@@ -72,7 +72,7 @@ for family in $families; do
       dir="$out/${dim}d_${family}_G${G}_n${n}"
       shape=""
       if [ "$family" != standard ]; then
-        shape=$'subsection Shape functions\n  set Family = '"$family"$'\nend'
+        shape=$'subsection Shape functions\n  set Family = '"$family"$'\n  set Domain outside the grid = clamp\nend'
       fi
       rm -rf "$dir"
       mkdir -p "$dir"

@@ -1,28 +1,48 @@
 #!/usr/bin/env bash
 # BENCHMARKS.md section 10: particle-updates per second of the time loop and
 # peak memory per particle, on 1 and 2 ranks, as printed by mpm itself.
-# Usage: scripts/throughput.sh [cells]   (cells inside the block per
-# direction: 256 or 512). Run it on an otherwise idle machine.
+# Usage: scripts/throughput.sh [cells] [variant] [ranks]
+#   cells:   cells inside the block per direction (256 or 512)
+#   variant: standard (default), filter (assumed-stress filter, mass
+#            metric), theta-bar, uGIMP, cpGIMP, CPDI, CPDI2
+#   ranks:   the rank counts to run, e.g. "1" or "1 2" (default)
+# Run it on an otherwise idle machine.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cells=${1:-256}
+variant=${2:-standard}
+ranks=${3:-1 2}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+family=standard remedy=""
+case "$variant" in
+  standard) ;;
+  filter) remedy="set Stress filter = assumed stress" ;;
+  theta-bar) remedy="set Volumetric smoothing = cell" ;;
+  uGIMP|cpGIMP|CPDI|CPDI2) family=$variant ;;
+  *) echo "unknown variant '$variant'" >&2; exit 1 ;;
+esac
 work=$(mktemp -d)
 cat > "$work/case.prm" <<PRM
 include $root/prm/throughput_2d.prm
 subsection Grid
   set Subdivisions = $((cells * 3 / 2))
 end
+subsection Shape functions
+  set Family = $family
+end
 subsection Bodies
   subsection Body 0
     set Subdivisions = $cells
+    subsection Locking remedies
+      $remedy
+    end
   end
 end
 PRM
 cd "$work"
-for np in 1 2; do
+for np in $ranks; do
   mpirun -np $np "$root/build/mpm" case.prm > log.$np
-  echo "ranks $np, ${cells}^2 block: $(sed -n 's/^  particles: //p' log.$np) particles"
+  echo "$variant, ranks $np, ${cells}^2 block: $(sed -n 's/^  particles: //p' log.$np) particles"
   grep -E "time loop:|memory:" log.$np
 done
 rm -rf "$work"

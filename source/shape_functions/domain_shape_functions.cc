@@ -48,7 +48,17 @@ namespace mpm
                                       Point<dim>       &xi) const
     {
       using Grid = BackgroundGrid<dim>;
-      xi         = grid.geometry(cell).inverse_map(x, start);
+      // boxes map directly (inlined here: this is the hot path of CPDI)
+      auto to_reference = [&](const unsigned int c, const Point<dim> &guess) {
+        const auto &geo = grid.geometry(c);
+        if (!geo.is_box)
+          return geo.inverse_map(x, guess);
+        Point<dim> r;
+        for (unsigned int d = 0; d < dim; ++d)
+          r[d] = (x[d] - geo.vertices[0][d]) * geo.inverse_extent[d];
+        return r;
+      };
+      xi = to_reference(cell, start);
       for (unsigned int hop = 0; hop <= 4 * dim; ++hop)
         {
           if (Q1Cell<dim>::is_inside(xi))
@@ -81,7 +91,7 @@ namespace mpm
                     if (n2 != Grid::outside_grid && n2 != Grid::unknown_cell)
                       {
                         cell  = n2;
-                        xi    = grid.geometry(cell).inverse_map(x, xi);
+                        xi    = to_reference(cell, xi);
                         other = true;
                         break;
                       }
@@ -99,7 +109,7 @@ namespace mpm
           Point<dim> centre;
           for (unsigned int d = 0; d < dim; ++d)
             centre[d] = 0.5;
-          xi = grid.geometry(cell).inverse_map(x, centre);
+          xi = to_reference(cell, centre);
         }
       return Status::lost_corner;
     }

@@ -486,12 +486,24 @@ namespace mpm
   Simulator<dim>::grid_to_particle(const double dt)
   {
     TimerOutput::Scope t(timer, "G2P");
-    const auto         e = transfer::grid_to_particle(background,
-                                                  particle_handler,
-                                                  kinematics,
-                                                  dt,
-                                                  params.time.flip_fraction,
-                                                  domain_functions.get());
+    // The domain families fuse MUSL's re-map into G2P (one stencil).
+    const bool fused_remap =
+      domain_functions &&
+      params.time.scheme == Parameters::TimeStepping::Scheme::musl;
+    const auto e =
+      domain_functions ?
+        transfer::grid_to_particle_domains(background,
+                                           particle_handler,
+                                           kinematics,
+                                           dt,
+                                           params.time.flip_fraction,
+                                           *domain_functions,
+                                           fused_remap ? &remap : nullptr) :
+        transfer::grid_to_particle(background,
+                                   particle_handler,
+                                   kinematics,
+                                   dt,
+                                   params.time.flip_fraction);
     if (local_error.empty())
       local_error = e;
   }
@@ -501,16 +513,19 @@ namespace mpm
   Simulator<dim>::remap_momentum()
   {
     TimerOutput::Scope t(timer, "MUSL re-map");
-    const auto e_p2g = transfer::particle_to_grid(background,
-                                                  particle_handler,
-                                                  bodies,
-                                                  current_time,
-                                                  transfer::P2GContent::momentum,
-                                                  remap,
-                                                  static_cast<filters::StressFilter<dim> *>(nullptr),
-                                                  domain_functions.get());
-    if (local_error.empty())
-      local_error = e_p2g;
+    if (!domain_functions) // the domain families re-map in G2P
+      {
+        const auto e_p2g = transfer::particle_to_grid(
+          background,
+          particle_handler,
+          bodies,
+          current_time,
+          transfer::P2GContent::momentum,
+          remap,
+          static_cast<filters::StressFilter<dim> *>(nullptr));
+        if (local_error.empty())
+          local_error = e_p2g;
+      }
     const auto e = nodal_velocity(
       background, p2g, remap, dim, 0, min_nodal_mass, kinematics);
     if (local_error.empty())

@@ -23,7 +23,7 @@ namespace mpm
     {
       if (domains)
         return grid_to_particle_domains(
-          grid, particles, kinematics, dt, flip, *domains);
+          grid, particles, kinematics, dt, flip, *domains, nullptr);
       using L                   = ParticleLayout<dim>;
       using K                   = KinematicsLayout<dim>;
       constexpr unsigned int nv = shape_functions::n_q1<dim>;

@@ -21,8 +21,15 @@ namespace mpm
       const NodalVector                                &kinematics,
       const double                                      dt,
       const double                                      flip,
-      const shape_functions::DomainShapeFunctions<dim> &domains)
+      const shape_functions::DomainShapeFunctions<dim> &domains,
+      NodalVector                                      *remap)
     {
+      double *momentum = nullptr;
+      if (remap)
+        {
+          *remap   = 0.;
+          momentum = remap->begin();
+        }
       using L      = ParticleLayout<dim>;
       using K      = KinematicsLayout<dim>;
       using Status = typename shape_functions::DomainShapeFunctions<dim>::Status;
@@ -64,6 +71,13 @@ namespace mpm
                   x[d] += dt * v_grid[d];
                   ok = ok && std::isfinite(vp) && std::isfinite(x[d]);
                 }
+              // MUSL: the new particle momentum back to the nodes, with
+              // the same weights
+              if (momentum)
+                for (unsigned int k = 0; k < st.n; ++k)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    momentum[st.node[k] * dim + d] +=
+                      st.value[k] * prop[L::mass] * prop[L::velocity + d];
               if (!ok && error.empty())
                 {
                   std::ostringstream s;
@@ -74,6 +88,8 @@ namespace mpm
               p.set_location(x);
             }
         });
+      if (remap)
+        remap->compress(VectorOperation::add);
       return error;
     }
 
@@ -114,7 +130,8 @@ namespace mpm
     const NodalVector &,                                            \
     double,                                                         \
     double,                                                         \
-    const shape_functions::DomainShapeFunctions<d> &);            \
+    const shape_functions::DomainShapeFunctions<d> &,             \
+    NodalVector *);                                               \
   template std::string move_domain_corners<d>(                      \
     const BackgroundGrid<d> &,                                      \
     Particles::ParticleHandler<d> &,                                \

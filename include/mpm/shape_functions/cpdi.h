@@ -130,15 +130,20 @@ namespace mpm
         return J;
       };
 
-      // Quality at the corners: convex and not flat.
+      // Quality at the corners (convex and not flat): J there has the
+      // two (three) edges leaving the corner as columns.
       cw.quality = 1;
       for (unsigned int c = 0; c < nc; ++c)
         {
-          Point<dim> xi;
+          Tensor<2, dim> J;
           for (unsigned int d = 0; d < dim; ++d)
-            xi[d] = (c >> d) & 1;
-          const Tensor<2, dim> J     = jacobian(xi);
-          const double         edges = internal::column_product(J);
+            {
+              const unsigned int other = c ^ (1u << d);
+              const double       sign  = ((c >> d) & 1) ? -1. : 1.;
+              for (unsigned int i = 0; i < dim; ++i)
+                J[i][d] = sign * (cw.x[other][i] - cw.x[c][i]);
+            }
+          const double edges = internal::column_product(J);
           cw.quality =
             std::min(cw.quality, edges > 0 ? dealii::determinant(J) / edges : 0.);
         }

@@ -38,7 +38,12 @@ namespace mpm
       const double                                      flip_fraction,
       const shape_functions::DomainShapeFunctions<dim> *domains = nullptr);
 
-    /// G2P of the particle-domain families.
+    /**
+     * G2P of the particle-domain families. With @p remap (MUSL), each
+     * particle's new momentum goes back to the nodes in the same pass
+     * (dim components per node, compressed at the end): the re-map
+     * reuses the stencil instead of evaluating the domain again.
+     */
     template <int dim>
     std::string
     grid_to_particle_domains(
@@ -47,7 +52,8 @@ namespace mpm
       const NodalVector                                &kinematics,
       const double                                      dt,
       const double                                      flip_fraction,
-      const shape_functions::DomainShapeFunctions<dim> &domains);
+      const shape_functions::DomainShapeFunctions<dim> &domains,
+      NodalVector                                      *remap = nullptr);
 
     /**
      * CPDI2's domain update, with the position update at the end of the
