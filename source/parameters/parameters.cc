@@ -277,7 +277,7 @@ namespace mpm
         "stretch of the particle; CPDI: average over the parallelogram "
         "(parallelepiped) F r_i; CPDI2: over the quadrilateral (hexahedron) "
         "of corners moved with the grid velocity. Domains come from the "
-        "body mesh (doc/theory.md, section 5).");
+        "body mesh (doc/theory.md, section 9).");
       prm.declare_entry(
         "Domain outside the grid",
         "error",

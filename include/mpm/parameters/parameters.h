@@ -83,7 +83,7 @@ namespace mpm
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
-    /// The shape-function family of the transfers (doc/theory.md, 5).
+    /// The shape-function family of the transfers (doc/theory.md, 9).
     struct ShapeFunctions
     {
       shape_functions::Family family = shape_functions::Family::standard;

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Spinning disk (BENCHMARKS.md section 3) for every shape-function family,
+# with and without the assumed-stress filter: the error table at the end
+# time and the seed-style panels (particles coloured by sigma_rr and
+# sigma_rt, one panel per variant).
+# Usage: scripts/spinning_disk_study.sh [OUT]   (default results/spinning_disk)
+# Environment: END (end time, default 6.2), CELLS (grid cells per direction
+# over [-1.25,1.25], default 50: h = 0.05), VARIANTS (default below),
+# NP (MPI ranks, default 1), MPM (executable).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=${1:-$root/results/spinning_disk}
+end=${END:-6.2}
+cells=${CELLS:-50}
+np=${NP:-1}
+mpm=${MPM:-$root/build/mpm}
+variants=${VARIANTS:-"standard standard+filter uGIMP cpGIMP CPDI CPDI+filter CPDI2 CPDI2+filter"}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mkdir -p "$out"
+table="$out/errors.csv"
+echo "variant,h,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_change,energy_change,wall_s" > "$table"
+start=$(date +%s)
+for v in $variants; do
+  family=${v%%+*}
+  filter=""
+  [ "$v" != "$family" ] && filter="set Stress filter = assumed stress"
+  dir="$out/$v"
+  rm -rf "$dir"; mkdir -p "$dir"
+  cat > "$dir/case.prm" <<PRM
+include $root/prm/spinning_disk.prm
+subsection Grid
+  set Subdivisions = $cells
+end
+subsection Shape functions
+  set Family = $family
+end
+subsection Time stepping
+  set End time = $end
+end
+subsection Output
+  set Directory = $dir/output
+  set Interval = $end
+  set Write vtu = false
+end
+subsection Bodies
+  subsection Body 0
+    subsection Locking remedies
+      $filter
+    end
+  end
+end
+PRM
+  t0=$(date +%s)
+  if ! mpirun -np "$np" "$mpm" "$dir/case.prm" > "$dir/log.txt" 2>&1; then
+    echo "$v failed: $(grep -m1 'mpm:' "$dir/log.txt")" >&2
+    echo "$v,$(awk -v n="$cells" 'BEGIN{print 2.5/n}'),failed,,,,,,$(( $(date +%s) - t0 ))" >> "$table"
+    continue
+  fi
+  wall=$(( $(date +%s) - t0 ))
+  awk -v v="$v" -v h="$(awk -v n="$cells" 'BEGIN{print 2.5/n}')" -v w="$wall" '
+    NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+    NR == 2 { L0 = $c["angular_momentum_z"]; E0 = $c["total_energy"] }
+    { last = $0 }
+    END {
+      split(last, f, " ")
+      printf "%s,%s,%s,%.4g,%.4g,%.4g,%.3g,%.3g,%s\n", v, h, f[c["time"]],
+        f[c["sigma_rr_rms_error"]], f[c["sigma_rt_rms"]], f[c["v_r_rms"]],
+        f[c["angular_momentum_z"]] / L0 - 1, f[c["total_energy"]] / E0 - 1, w
+    }' "$dir/output/statistics.txt" >> "$table"
+  tail -1 "$table"
+done
+echo "wall time: $(( $(date +%s) - start )) s"
+/usr/bin/python3 "$root/scripts/plot_spinning_disk_variants.py" "$out" "$root/doc/figures/spinning_disk_variants.png" $variants
