@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Convecting bar: RMS stress error / sigma0 and RMS velocity error / v0
 over time, standard MPM against the 1D convection correction (stress only,
-and stress and body force), 2 and 4 particles per cell, from the
+and stress and body force) and the particle-domain families, 2 and 4
+particles per cell, from the
 statistics.txt of the runs that run_convecting_bar.sh makes
 (FOLDER/ppc{2,4}-{standard,stress-only,correction}/).
 Prints the error at the end (after 2 L of travel) and the largest over the
@@ -22,7 +23,9 @@ print(f"{'run':18s} {'sigma end':>10s} {'sigma max':>10s} "
 found = 0
 for col, ppc in enumerate((2, 4)):
     for variant, style in (("standard", "C3-"), ("stress-only", "C2-"),
-                           ("correction", "C0-")):
+                           ("correction", "C0-"), ("uGIMP", "C1--"),
+                           ("cpGIMP", "C4--"), ("CPDI", "C5--"),
+                           ("CPDI2", "C6:")):
         name = f"ppc{ppc}-{variant}"
         path = os.path.join(folder, name, "statistics.txt")
         if not os.path.exists(path):

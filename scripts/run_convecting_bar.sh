@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Convecting bar (BENCHMARKS.md section 1): standard MPM, the 1D convection
 # correction of the stress only (Body force correction = false) and the full
-# correction, with 2 and 4 particles per cell, then the table and the plot.
+# correction, and the particle-domain families uGIMP, cpGIMP, CPDI and CPDI2
+# (without correction), with 2 and 4 particles per cell, then the table and
+# the plot.
 # Statistics every step, no particle files.
 # Usage: scripts/run_convecting_bar.sh [FOLDER] [FLIP fraction]
 # (default results/convecting-bar, and the prm's PIC, 0).
@@ -12,13 +14,20 @@ flip=${2:-0}
 mkdir -p "$out"
 cd "$out"
 for ppc in 2 4; do
-  for variant in standard stress-only correction; do
-    filter="convection correction" body_force=true
-    [ "$variant" = standard ] && filter=none
-    [ "$variant" = stress-only ] && body_force=false
+  for variant in standard stress-only correction uGIMP cpGIMP CPDI CPDI2; do
+    filter="convection correction" body_force=true family=standard
+    case "$variant" in
+      standard) filter=none ;;
+      stress-only) body_force=false ;;
+      correction) ;;
+      *) filter=none family=$variant ;;
+    esac
     name=ppc$ppc-$variant
     cat > "$name.prm" <<PRM
 include $root/prm/convecting_bar.prm
+subsection Shape functions
+  set Family = $family
+end
 subsection Time stepping
   set FLIP fraction = $flip
 end

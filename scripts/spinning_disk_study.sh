@@ -4,9 +4,12 @@
 # time and the seed-style panels (particles coloured by sigma_rr and
 # sigma_rt, one panel per variant).
 # Usage: scripts/spinning_disk_study.sh [OUT]   (default results/spinning_disk)
+# A variant is a family with optional suffixes: +filter (assumed-stress
+# filter) and +APIC (Velocity transfer = APIC), e.g. CPDI+filter+APIC.
 # Environment: END (end time, default 6.2), CELLS (grid cells per direction
-# over [-1.25,1.25], default 50: h = 0.05), VARIANTS (default below),
-# NP (MPI ranks, default 1), MPM (executable).
+# over [-1.25,1.25], default 50: h = 0.05), CFL (default 0.5), VARIANTS
+# (default below), NP (MPI ranks, default 1), MPM (executable), PLOT (the
+# PNG, default doc/figures/spinning_disk_variants.png).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-$root/results/spinning_disk}
@@ -14,16 +17,19 @@ end=${END:-6.2}
 cells=${CELLS:-50}
 np=${NP:-1}
 mpm=${MPM:-$root/build/mpm}
-variants=${VARIANTS:-"standard standard+filter uGIMP cpGIMP CPDI CPDI+filter CPDI2 CPDI2+filter"}
+cfl=${CFL:-0.5}
+plot=${PLOT:-$root/doc/figures/spinning_disk_variants.png}
+variants=${VARIANTS:-"standard standard+filter uGIMP cpGIMP CPDI CPDI+filter CPDI2 CPDI2+filter CPDI+APIC CPDI+filter+APIC"}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$out"
 table="$out/errors.csv"
-echo "variant,h,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_change,energy_change,wall_s" > "$table"
+echo "variant,h,cfl,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_change,energy_change,wall_s" > "$table"
 start=$(date +%s)
 for v in $variants; do
   family=${v%%+*}
-  filter=""
-  [ "$v" != "$family" ] && filter="set Stress filter = assumed stress"
+  filter="" transfer=FLIP
+  case "$v" in *+filter*) filter="set Stress filter = assumed stress" ;; esac
+  case "$v" in *+APIC*) transfer=APIC ;; esac
   dir="$out/$v"
   rm -rf "$dir"; mkdir -p "$dir"
   cat > "$dir/case.prm" <<PRM
@@ -36,6 +42,8 @@ subsection Shape functions
 end
 subsection Time stepping
   set End time = $end
+  set CFL number = $cfl
+  set Velocity transfer = $transfer
 end
 subsection Output
   set Directory = $dir/output
@@ -53,21 +61,21 @@ PRM
   t0=$(date +%s)
   if ! mpirun -np "$np" "$mpm" "$dir/case.prm" > "$dir/log.txt" 2>&1; then
     echo "$v failed: $(grep -m1 'mpm:' "$dir/log.txt")" >&2
-    echo "$v,$(awk -v n="$cells" 'BEGIN{print 2.5/n}'),failed,,,,,,$(( $(date +%s) - t0 ))" >> "$table"
+    echo "$v,$(awk -v n="$cells" 'BEGIN{print 2.5/n}'),$cfl,failed,,,,,,$(( $(date +%s) - t0 ))" >> "$table"
     continue
   fi
   wall=$(( $(date +%s) - t0 ))
-  awk -v v="$v" -v h="$(awk -v n="$cells" 'BEGIN{print 2.5/n}')" -v w="$wall" '
+  awk -v v="$v" -v h="$(awk -v n="$cells" 'BEGIN{print 2.5/n}')" -v cfl="$cfl" -v w="$wall" '
     NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
     NR == 2 { L0 = $c["angular_momentum_z"]; E0 = $c["total_energy"] }
     { last = $0 }
     END {
       split(last, f, " ")
-      printf "%s,%s,%s,%.4g,%.4g,%.4g,%.3g,%.3g,%s\n", v, h, f[c["time"]],
+      printf "%s,%s,%s,%s,%.4g,%.4g,%.4g,%.3g,%.3g,%s\n", v, h, cfl, f[c["time"]],
         f[c["sigma_rr_rms_error"]], f[c["sigma_rt_rms"]], f[c["v_r_rms"]],
         f[c["angular_momentum_z"]] / L0 - 1, f[c["total_energy"]] / E0 - 1, w
     }' "$dir/output/statistics.txt" >> "$table"
   tail -1 "$table"
 done
 echo "wall time: $(( $(date +%s) - start )) s"
-/usr/bin/python3 "$root/scripts/plot_spinning_disk_variants.py" "$out" "$root/doc/figures/spinning_disk_variants.png" $variants
+/usr/bin/python3 "$root/scripts/plot_spinning_disk_variants.py" "$out" "$plot" $variants

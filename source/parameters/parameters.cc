@@ -188,6 +188,17 @@ namespace mpm
                         Patterns::Double(0, 1),
                         "Particle velocity update: 1 = FLIP (increment), 0 "
                         "= PIC (grid velocity), in between a blend.");
+      prm.declare_entry(
+        "Velocity transfer",
+        "FLIP",
+        Patterns::Selection("FLIP|APIC"),
+        "FLIP: the particle velocity is updated by the FLIP fraction "
+        "blend of increment and grid velocity. APIC (Jiang et al. 2015): "
+        "the particle carries an affine velocity C_p = sum_i v_i grad "
+        "N_ip besides v_p = sum_i N_ip v_i, and P2G sends "
+        "m_p (v_p + C_p (x_i - x_p)): linear velocity fields (a rigid "
+        "rotation) are transferred exactly and angular momentum is "
+        "conserved. With APIC the FLIP fraction must stay 1 (unused).");
       prm.declare_entry("Damping coefficient",
                         "0",
                         Patterns::Double(0),
@@ -215,6 +226,7 @@ namespace mpm
       time_step           = prm.get_double("Time step");
       cfl_number          = prm.get_double("CFL number");
       flip_fraction       = prm.get_double("FLIP fraction");
+      apic                = prm.get("Velocity transfer") == "APIC";
       damping             = prm.get_double("Damping coefficient");
       max_steps           = prm.get_integer("Maximum number of steps");
       prm.leave_subsection();
@@ -222,6 +234,12 @@ namespace mpm
         throw InputError("Time stepping/Time step must be positive");
       if (step_control == StepControl::cfl && !(cfl_number > 0))
         throw InputError("Time stepping/CFL number must be positive");
+      if (apic && flip_fraction != 1.)
+        throw InputError(
+          "Time stepping/FLIP fraction = " + std::to_string(flip_fraction) +
+          " has no meaning with Velocity transfer = APIC (its particle "
+          "velocity is the grid velocity; the affine part keeps what PIC "
+          "loses): remove the entry");
     }
 
     // ---------------------------------------------------- BoundaryConditions

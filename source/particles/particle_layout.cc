@@ -42,6 +42,10 @@ namespace mpm
         for (unsigned int d = 0; d < dim; ++d)
           n[corners() + c * dim + d] =
             "corner" + std::to_string(c) + "_" + axis[d];
+    if (has_affine)
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          n[affine() + i * dim + j] = std::string("C_") + axis[i] + axis[j];
     for (auto &s : n)
       for (auto &c : s)
         if (c == ' ')

@@ -178,12 +178,20 @@ namespace mpm
     using shape_functions::Family;
     const Family family = params.shape_functions.family;
     layout.has_corners  = family == Family::cpdi2;
+    layout.has_affine   = params.time.apic;
     const std::string what =
       std::string("Shape functions/Family = ") + family_name(family);
     if (shape_functions::is_gimp(family) && !background.is_cartesian())
       throw InputError(what +
                        " needs a grid of axis-parallel boxes, and this grid "
                        "has distorted cells; use CPDI or CPDI2 there");
+    if (family == Family::standard && params.time.apic)
+      throw InputError(
+        "Time stepping/Velocity transfer = APIC needs a particle-domain "
+        "family (Shape functions/Family = uGIMP, cpGIMP, CPDI or CPDI2): "
+        "with the standard Q1 functions the affine transfer C_p = sum_i "
+        "v_i grad N_ip extrapolates the bilinear mode beyond the cell and "
+        "the step is unstable (doc/theory.md, section 9.8)");
     if (family != Family::standard && any_convection_correction)
       throw InputError(what + " cannot be combined with Locking remedies/"
                               "Stress filter = convection correction, which "
@@ -212,6 +220,25 @@ namespace mpm
           p[L::domain + d * dim + e] = s.domain[d][e];
       }
     p[L::traction_area] = s.traction_area;
+    if (layout.has_affine)
+      {
+        // APIC starts from the gradient of the initial velocity (central
+        // differences of the expression)
+        const double h =
+          1e-6 * std::max(1., std::sqrt(s.domain.norm_square()) +
+                                std::sqrt(s.position.square()));
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            Point<dim> plus = s.position, minus = s.position;
+            plus[j] += h;
+            minus[j] -= h;
+            double vp[dim], vm[dim];
+            body.initial_velocity.value(plus, 0., vp);
+            body.initial_velocity.value(minus, 0., vm);
+            for (unsigned int i = 0; i < dim; ++i)
+              p[layout.affine() + i * dim + j] = (vp[i] - vm[i]) / (2 * h);
+          }
+      }
     if (layout.has_corners)
       for (unsigned int c = 0; c < (1u << dim); ++c)
         for (unsigned int d = 0; d < dim; ++d)
@@ -462,7 +489,8 @@ namespace mpm
                                                 content,
                                                 p2g,
                                                 stress_filter.get(),
-                                                domain_functions.get());
+                                                domain_functions.get(),
+                                                layout.affine());
       if (local_error.empty())
         local_error = e;
     }
@@ -498,12 +526,17 @@ namespace mpm
                                            dt,
                                            params.time.flip_fraction,
                                            *domain_functions,
-                                           fused_remap ? &remap : nullptr) :
+                                           fused_remap ? &remap : nullptr,
+                                           layout.affine()) :
         transfer::grid_to_particle(background,
                                    particle_handler,
                                    kinematics,
                                    dt,
-                                   params.time.flip_fraction);
+                                   params.time.flip_fraction,
+                                   static_cast<const shape_functions::
+                                                 DomainShapeFunctions<dim> *>(
+                                     nullptr),
+                                   layout.affine());
     if (local_error.empty())
       local_error = e;
   }
@@ -522,7 +555,10 @@ namespace mpm
           current_time,
           transfer::P2GContent::momentum,
           remap,
-          static_cast<filters::StressFilter<dim> *>(nullptr));
+          static_cast<filters::StressFilter<dim> *>(nullptr),
+          static_cast<const shape_functions::DomainShapeFunctions<dim> *>(
+            nullptr),
+          layout.affine());
         if (local_error.empty())
           local_error = e_p2g;
       }

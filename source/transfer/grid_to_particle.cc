@@ -19,24 +19,42 @@ namespace mpm
                      const NodalVector               &kinematics,
                      const double                     dt,
                      const double                     flip,
-                     const shape_functions::DomainShapeFunctions<dim> *domains)
+                     const shape_functions::DomainShapeFunctions<dim> *domains,
+                     const unsigned int                                affine)
     {
       if (domains)
         return grid_to_particle_domains(
-          grid, particles, kinematics, dt, flip, *domains, nullptr);
+          grid, particles, kinematics, dt, flip, *domains, nullptr, affine);
       using L                   = ParticleLayout<dim>;
       using K                   = KinematicsLayout<dim>;
       constexpr unsigned int nv = shape_functions::n_q1<dim>;
       const double          *in = kinematics.begin();
       std::string            error;
       double                 N[nv];
+      Tensor<1, dim>         G[nv];
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
           const unsigned int *nodes = grid.nodes(cell);
+          const auto         &geo   = grid.geometry(cell);
           for (auto &p : pic)
             {
-              shape_functions::Q1Cell<dim>::values(p.get_reference_location(),
-                                                   N);
+              if (affine)
+                {
+                  // APIC: C_p = sum_i v_i (x) grad N_ip
+                  geo.values_and_gradients(p.get_reference_location(), N, G);
+                  Tensor<2, dim> C;
+                  for (unsigned int v = 0; v < nv; ++v)
+                    {
+                      const double *k = in + nodes[v] * K::n_components;
+                      for (unsigned int i = 0; i < dim; ++i)
+                        for (unsigned int j = 0; j < dim; ++j)
+                          C[i][j] += k[K::velocity + i] * G[v][j];
+                    }
+                  store_matrix<dim>(C, p.get_properties().data() + affine);
+                }
+              else
+                shape_functions::Q1Cell<dim>::values(
+                  p.get_reference_location(), N);
               double v_grid[dim] = {}, dv[dim] = {};
               for (unsigned int v = 0; v < nv; ++v)
                 {
@@ -53,7 +71,8 @@ namespace mpm
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   double &vp = prop[L::velocity + d];
-                  vp         = flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
+                  vp = affine ? v_grid[d] :
+                                flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
                   x[d] += dt * v_grid[d];
                   ok = ok && std::isfinite(vp) && std::isfinite(x[d]);
                 }
@@ -76,20 +95,23 @@ namespace mpm
                         const NodalVector &,
                         double,
                         double,
-                        const shape_functions::DomainShapeFunctions<1> *);
+                        const shape_functions::DomainShapeFunctions<1> *,
+                        unsigned int);
     template std::string
     grid_to_particle<2>(const BackgroundGrid<2> &,
                         Particles::ParticleHandler<2> &,
                         const NodalVector &,
                         double,
                         double,
-                        const shape_functions::DomainShapeFunctions<2> *);
+                        const shape_functions::DomainShapeFunctions<2> *,
+                        unsigned int);
     template std::string
     grid_to_particle<3>(const BackgroundGrid<3> &,
                         Particles::ParticleHandler<3> &,
                         const NodalVector &,
                         double,
                         double,
-                        const shape_functions::DomainShapeFunctions<3> *);
+                        const shape_functions::DomainShapeFunctions<3> *,
+                        unsigned int);
   } // namespace transfer
 } // namespace mpm

@@ -22,7 +22,8 @@ namespace mpm
       const double                                      dt,
       const double                                      flip,
       const shape_functions::DomainShapeFunctions<dim> &domains,
-      NodalVector                                      *remap)
+      NodalVector                                      *remap,
+      const unsigned int                                affine)
     {
       double *momentum = nullptr;
       if (remap)
@@ -52,7 +53,8 @@ namespace mpm
                       domains.message(status, p.get_id(), p.get_location());
                   continue;
                 }
-              double v_grid[dim] = {}, dv[dim] = {};
+              double         v_grid[dim] = {}, dv[dim] = {};
+              Tensor<2, dim> C; // APIC: sum_i v_i (x) grad S_ip
               for (unsigned int k = 0; k < st.n; ++k)
                 {
                   const double *node = in + st.node[k] * K::n_components;
@@ -61,23 +63,43 @@ namespace mpm
                       v_grid[d] += st.value[k] * node[K::velocity + d];
                       dv[d] += st.value[k] * node[K::increment + d];
                     }
+                  if (affine)
+                    for (unsigned int i = 0; i < dim; ++i)
+                      for (unsigned int j = 0; j < dim; ++j)
+                        C[i][j] += node[K::velocity + i] * st.gradient[k][j];
                 }
+              if (affine)
+                store_matrix<dim>(C, prop + affine);
               Point<dim> x  = p.get_location();
               bool       ok = true;
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   double &vp = prop[L::velocity + d];
-                  vp         = flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
+                  vp = affine ? v_grid[d] :
+                                flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
                   x[d] += dt * v_grid[d];
                   ok = ok && std::isfinite(vp) && std::isfinite(x[d]);
                 }
               // MUSL: the new particle momentum back to the nodes, with
               // the same weights
               if (momentum)
-                for (unsigned int k = 0; k < st.n; ++k)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    momentum[st.node[k] * dim + d] +=
-                      st.value[k] * prop[L::mass] * prop[L::velocity + d];
+                {
+                  Point<dim> x_c; // the domain centroid (see P2G)
+                  if (affine)
+                    for (unsigned int k = 0; k < st.n; ++k)
+                      x_c += st.value[k] * grid.node_position(st.node[k]);
+                  for (unsigned int k = 0; k < st.n; ++k)
+                    {
+                      Tensor<1, dim> v;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        v[d] = prop[L::velocity + d];
+                      if (affine)
+                        v += C * (grid.node_position(st.node[k]) - x_c);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        momentum[st.node[k] * dim + d] +=
+                          st.value[k] * prop[L::mass] * v[d];
+                    }
+                }
               if (!ok && error.empty())
                 {
                   std::ostringstream s;
@@ -131,7 +153,8 @@ namespace mpm
     double,                                                         \
     double,                                                         \
     const shape_functions::DomainShapeFunctions<d> &,             \
-    NodalVector *);                                               \
+    NodalVector *,                                                \
+    unsigned int);                                                \
   template std::string move_domain_corners<d>(                      \
     const BackgroundGrid<d> &,                                      \
     Particles::ParticleHandler<d> &,                                \

@@ -38,11 +38,19 @@ namespace mpm
                      const P2GContent                 content,
                      NodalVector                     &nodal,
                      filters::StressFilter<dim>      *filter,
-                     const shape_functions::DomainShapeFunctions<dim> *domains)
+                     const shape_functions::DomainShapeFunctions<dim> *domains,
+                     const unsigned int                                affine)
     {
       if (domains)
-        return particle_to_grid_domains(
-          grid, particles, bodies, time, content, nodal, filter, *domains);
+        return particle_to_grid_domains(grid,
+                                        particles,
+                                        bodies,
+                                        time,
+                                        content,
+                                        nodal,
+                                        filter,
+                                        *domains,
+                                        affine);
       using L                              = ParticleLayout<dim>;
       constexpr unsigned int nv            = shape_functions::n_q1<dim>;
       const bool             momentum_only = content == P2GContent::momentum;
@@ -189,6 +197,18 @@ namespace mpm
                   for (unsigned int d = 0; d < dim; ++d)
                     local[v][1 + d] += w * prop[L::velocity + d];
                 }
+            if (do_momentum && affine)
+              {
+                // APIC: + m_p C_p (x_i - x_p), x_p where N was evaluated
+                const Tensor<2, dim> C   = load_matrix<dim>(prop + affine);
+                const Point<dim>     x_p = geo.map(xi);
+                for (unsigned int v = 0; v < nv; ++v)
+                  {
+                    const Tensor<1, dim> c = C * (geo.vertices[v] - x_p);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      local[v][1 + d] += N[v] * m * c[d];
+                  }
+              }
           }
 
         // Filtered bodies: project their stresses in this cell, then
@@ -266,7 +286,8 @@ namespace mpm
                         P2GContent,
                         NodalVector &,
                         filters::StressFilter<1> *,
-                        const shape_functions::DomainShapeFunctions<1> *);
+                        const shape_functions::DomainShapeFunctions<1> *,
+                        unsigned int);
     template std::string
     particle_to_grid<2>(const BackgroundGrid<2> &,
                         Particles::ParticleHandler<2> &,
@@ -275,7 +296,8 @@ namespace mpm
                         P2GContent,
                         NodalVector &,
                         filters::StressFilter<2> *,
-                        const shape_functions::DomainShapeFunctions<2> *);
+                        const shape_functions::DomainShapeFunctions<2> *,
+                        unsigned int);
     template std::string
     particle_to_grid<3>(const BackgroundGrid<3> &,
                         Particles::ParticleHandler<3> &,
@@ -284,6 +306,7 @@ namespace mpm
                         P2GContent,
                         NodalVector &,
                         filters::StressFilter<3> *,
-                        const shape_functions::DomainShapeFunctions<3> *);
+                        const shape_functions::DomainShapeFunctions<3> *,
+                        unsigned int);
   } // namespace transfer
 } // namespace mpm

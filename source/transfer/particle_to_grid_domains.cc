@@ -20,7 +20,8 @@ namespace mpm
       const P2GContent                                  content,
       NodalVector                                      &nodal,
       filters::StressFilter<dim>                       *filter,
-      const shape_functions::DomainShapeFunctions<dim> &domains)
+      const shape_functions::DomainShapeFunctions<dim> &domains,
+      const unsigned int                                affine)
     {
       using L                  = ParticleLayout<dim>;
       using Status             = typename shape_functions::
@@ -109,6 +110,18 @@ namespace mpm
                         ext[d] += t[d] * prop[L::traction_area];
                     }
                 }
+              // APIC: the affine velocity C_p
+              Tensor<2, dim> C;
+              Point<dim>     x_p;
+              if (affine && do_momentum)
+                {
+                  // about the domain's centroid sum_i S_ip x_i, so that
+                  // sum_i S_ip C (x_i - x_p) = 0 and momentum is kept
+                  // (CPDI2's centroid is not its particle position)
+                  C = load_matrix<dim>(prop + affine);
+                  for (unsigned int k = 0; k < st.n; ++k)
+                    x_p += st.value[k] * grid.node_position(st.node[k]);
+                }
               for (unsigned int k = 0; k < st.n; ++k)
                 {
                   double      *node = out + st.node[k] * nc;
@@ -116,8 +129,15 @@ namespace mpm
                   if (do_mass)
                     node[0] += S * m;
                   if (do_momentum)
-                    for (unsigned int d = 0; d < dim; ++d)
-                      node[off_p + d] += S * m * prop[L::velocity + d];
+                    {
+                      Tensor<1, dim> v;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        v[d] = prop[L::velocity + d];
+                      if (affine)
+                        v += C * (grid.node_position(st.node[k]) - x_p);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        node[off_p + d] += S * m * v[d];
+                    }
                   if (do_force)
                     {
                       const Tensor<1, dim> f = sigma * st.gradient[k];
@@ -140,7 +160,8 @@ namespace mpm
     P2GContent,                                                    \
     NodalVector &,                                                 \
     filters::StressFilter<d> *,                                    \
-    const shape_functions::DomainShapeFunctions<d> &);
+    const shape_functions::DomainShapeFunctions<d> &,              \
+    unsigned int);
     MPM_INSTANTIATE(1)
     MPM_INSTANTIATE(2)
     MPM_INSTANTIATE(3)

@@ -62,6 +62,7 @@ namespace mpm
       double       time_step     = 1e-3;
       double       cfl_number    = 0.5;
       double       flip_fraction = 1.0;
+      bool         apic          = false; ///< affine velocity transfer
       double       damping       = 0.0;
       unsigned int max_steps     = 0;
 

@@ -32,6 +32,7 @@ namespace mpm
    * | traction_area | 1           | body-boundary area carrying traction     |
    * | history       | n_history   | material internal variables              |
    * | corners       | 2^dim dim   | CPDI2 only: current domain corners       |
+   * | affine        | dim*dim     | APIC only: affine velocity C_p           |
    *
    * Stress is always stored with six components: 2D and 1D models keep the
    * out-of-plane normal stress that plane strain and uniaxial strain need.
@@ -52,8 +53,9 @@ namespace mpm
     static constexpr unsigned int traction_area = domain + dim * dim;
     static constexpr unsigned int history       = traction_area + 1;
 
-    unsigned int n_history = 0;
+    unsigned int n_history   = 0;
     bool         has_corners = false;
+    bool         has_affine  = false;
 
     static constexpr unsigned int n_corner_values = (1u << dim) * dim;
 
@@ -64,10 +66,19 @@ namespace mpm
       return history + n_history;
     }
 
+    /// Start of APIC's affine velocity C_p (row-major), 0 without APIC.
+    unsigned int
+    affine() const
+    {
+      return has_affine ? corners() + (has_corners ? n_corner_values : 0) :
+                          0;
+    }
+
     unsigned int
     n_properties() const
     {
-      return history + n_history + (has_corners ? n_corner_values : 0);
+      return history + n_history + (has_corners ? n_corner_values : 0) +
+             (has_affine ? dim * dim : 0);
     }
 
     /// Names for output, one per slot (vector components share a name).

@@ -27,6 +27,10 @@ namespace mpm
      *
      * With @p domains, N_ip are the family's domain averages
      * (grid_to_particle_domains()).
+     *
+     * @p affine: APIC's slot of C_p (0: no APIC). APIC sets
+     * v_p <- sum_i N_ip v_i and C_p <- sum_i v_i (x) grad N_ip (the
+     * flip fraction is not used).
      */
     template <int dim>
     std::string
@@ -36,7 +40,8 @@ namespace mpm
       const NodalVector                                &kinematics,
       const double                                      dt,
       const double                                      flip_fraction,
-      const shape_functions::DomainShapeFunctions<dim> *domains = nullptr);
+      const shape_functions::DomainShapeFunctions<dim> *domains = nullptr,
+      const unsigned int                                affine  = 0);
 
     /**
      * G2P of the particle-domain families. With @p remap (MUSL), each
@@ -53,7 +58,8 @@ namespace mpm
       const double                                      dt,
       const double                                      flip_fraction,
       const shape_functions::DomainShapeFunctions<dim> &domains,
-      NodalVector                                      *remap = nullptr);
+      NodalVector                                      *remap  = nullptr,
+      const unsigned int                                affine = 0);
 
     /**
      * CPDI2's domain update, with the position update at the end of the

@@ -60,6 +60,10 @@ namespace mpm
      * domain averages and reach the nodes of every cell a particle's
      * domain overlaps (particle_to_grid_domains()). Returns an empty
      * string, or what went wrong with the first bad particle domain.
+     *
+     * @p affine: APIC's slot of C_p in the particle properties (0: no
+     * APIC); the momentum sent to node i is then
+     * N_ip m_p (v_p + C_p (x_i - x_p)).
      */
     template <int dim>
     std::string
@@ -71,7 +75,8 @@ namespace mpm
       const P2GContent                                    content,
       NodalVector                                        &nodal,
       filters::StressFilter<dim>                         *filter  = nullptr,
-      const shape_functions::DomainShapeFunctions<dim>   *domains = nullptr);
+      const shape_functions::DomainShapeFunctions<dim>   *domains = nullptr,
+      const unsigned int                                  affine  = 0);
 
     /**
      * The P2G of the particle-domain families: per particle, the stencil
@@ -91,6 +96,7 @@ namespace mpm
       const P2GContent                                  content,
       NodalVector                                      &nodal,
       filters::StressFilter<dim>                       *filter,
-      const shape_functions::DomainShapeFunctions<dim> &domains);
+      const shape_functions::DomainShapeFunctions<dim> &domains,
+      const unsigned int                                affine);
   } // namespace transfer
 } // namespace mpm
