@@ -48,7 +48,33 @@ namespace mpm
                                       Point<dim>       &xi) const
     {
       using Grid = BackgroundGrid<dim>;
-      xi         = grid.geometry(cell).inverse_map(x, start);
+      // Reference coordinates of x in cell c, good enough to steer the
+      // walk: outside a distorted cell the bilinear map, extended beyond
+      // the cell, can fold, and Newton then finds no preimage
+      // (inverse_map says so with xi[0] = inf, which alone would send the
+      // walk across the upper x face whatever the direction of x). The
+      // affine map at the centre still points the way to x; x is not in
+      // this cell, so such a point never counts as inside.
+      auto to_reference = [&](const unsigned int c, const Point<dim> &guess) {
+        const auto &geo = grid.geometry(c);
+        Point<dim>  r   = geo.inverse_map(x, guess);
+        if (std::isfinite(r[0]))
+          return r;
+        Point<dim> centre;
+        for (unsigned int d = 0; d < dim; ++d)
+          centre[d] = 0.5;
+        r = centre + invert(geo.jacobian(centre)) * (x - geo.map(centre));
+        if (Q1Cell<dim>::is_inside(r))
+          {
+            unsigned int far = 0;
+            for (unsigned int d = 1; d < dim; ++d)
+              if (std::abs(r[d] - 0.5) > std::abs(r[far] - 0.5))
+                far = d;
+            r[far] = r[far] < 0.5 ? -1e-6 : 1 + 1e-6;
+          }
+        return r;
+      };
+      xi = to_reference(cell, start);
       for (unsigned int hop = 0; hop <= 4 * dim; ++hop)
         {
           if (Q1Cell<dim>::is_inside(xi))
@@ -81,7 +107,7 @@ namespace mpm
                     if (n2 != Grid::outside_grid && n2 != Grid::unknown_cell)
                       {
                         cell  = n2;
-                        xi    = grid.geometry(cell).inverse_map(x, xi);
+                        xi    = to_reference(cell, xi);
                         other = true;
                         break;
                       }
@@ -99,7 +125,7 @@ namespace mpm
           Point<dim> centre;
           for (unsigned int d = 0; d < dim; ++d)
             centre[d] = 0.5;
-          xi = grid.geometry(cell).inverse_map(x, centre);
+          xi = to_reference(cell, centre);
         }
       return Status::lost_corner;
     }
