@@ -423,10 +423,10 @@ namespace
   }
 
   /**
-   * A particle of family @p f at x with a domain of half-widths about
-   * size * h: a box (distorted = false) or a distorted domain. Returns
-   * the largest reach of the domain from x per direction, and the
-   * centroid (x except for CPDI2, whose corners are perturbed: null).
+   * A particle of family @p f at x with a domain of half-widths @p l: a
+   * box centred at x (distorted = false) or a distorted domain (centred
+   * at x, except CPDI2's perturbed corners). Returns the largest reach of
+   * the domain from x per direction.
    */
   template <int dim>
   Tensor<1, dim>
