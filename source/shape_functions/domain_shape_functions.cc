@@ -48,14 +48,38 @@ namespace mpm
                                       Point<dim>       &xi) const
     {
       using Grid = BackgroundGrid<dim>;
-      // boxes map directly (inlined here: this is the hot path of CPDI)
+      // Reference coordinates of x in cell c, good enough to steer the
+      // walk. Boxes map directly (inlined: the hot path of CPDI). Outside
+      // a distorted cell the bilinear map, extended beyond the cell, can
+      // fold, and Newton then finds no preimage (inverse_map says so with
+      // xi[0] = inf, which alone would send the walk across the upper x
+      // face whatever the direction of x). The affine map at the centre
+      // still points the way to x; x is not in this cell, so such a point
+      // never counts as inside.
       auto to_reference = [&](const unsigned int c, const Point<dim> &guess) {
         const auto &geo = grid.geometry(c);
-        if (!geo.is_box)
-          return geo.inverse_map(x, guess);
-        Point<dim> r;
+        Point<dim>  r;
+        if (geo.is_box)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              r[d] = (x[d] - geo.vertices[0][d]) * geo.inverse_extent[d];
+            return r;
+          }
+        r = geo.inverse_map(x, guess);
+        if (std::isfinite(r[0]))
+          return r;
+        Point<dim> centre;
         for (unsigned int d = 0; d < dim; ++d)
-          r[d] = (x[d] - geo.vertices[0][d]) * geo.inverse_extent[d];
+          centre[d] = 0.5;
+        r = centre + invert(geo.jacobian(centre)) * (x - geo.map(centre));
+        if (Q1Cell<dim>::is_inside(r))
+          {
+            unsigned int far = 0;
+            for (unsigned int d = 1; d < dim; ++d)
+              if (std::abs(r[d] - 0.5) > std::abs(r[far] - 0.5))
+                far = d;
+            r[far] = r[far] < 0.5 ? -1e-6 : 1 + 1e-6;
+          }
         return r;
       };
       xi = to_reference(cell, start);

@@ -442,7 +442,17 @@ namespace mpm
             local_error = e;
         }
         update_stress(dt);
-        particle_to_grid(P2GContent::force);
+        // cpGIMP and CPDI take their domains from F, which the stress
+        // update has just changed: the force pass and G2P see the new
+        // domain, so mass and momentum must be mapped with it again, or
+        // G2P's weights no longer sum to the nodal masses and momentum is
+        // not conserved.
+        using shape_functions::Family;
+        const bool new_domains =
+          domain_functions && (domain_functions->family() == Family::cpgimp ||
+                               domain_functions->family() == Family::cpdi);
+        particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
+                                       P2GContent::force);
         update_grid(dt);
         grid_to_particle(dt);
       }
