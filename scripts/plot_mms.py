@@ -57,29 +57,32 @@ print(f"largest difference, statistics against the particle CSVs (/G): {worst:.2
 
 data = pd.concat(frames)
 data = data[data.u_L2_error != "failed"].astype({"u_L2_error": float})
-fig, axes = plt.subplots(1, 3, figsize=(17, 5))
-families = list(dict.fromkeys(data.family))
+# One panel per dimension and amplitude, one line per family: the L2 error
+# at t = T (solid) and its largest value over the period (dotted).
+dims = sorted(data.dim.unique())
 Gs = sorted(data.G.unique())
-markers = ["o", "s", "^", "D"]
-hs = np.array(sorted(data.h.unique()))
-for ax, column, name in [(axes[0], "u_L2_error", "(a) L2 error at t = T"),
-                         (axes[1], "u_max_error", "(b) maximum error at t = T"),
-                         (axes[2], "u_L2_peak", "(c) largest L2 error over the period")]:
-    for (dim, family, G), d in data.groupby(["dim", "family", "G"], sort=False):
-        d = d.sort_values("h")
-        ax.loglog(d.h, d[column].astype(float),
-                  marker=markers[Gs.index(G) % len(markers)],
-                  ls="-" if dim == 2 else "--",
-                  color=f"C{families.index(family)}",
-                  label=f"{family}, G = {G:g}" + (", 3D" if dim == 3 else ""))
-    # below the lowest curve at the coarsest h, so that it stays visible
-    ref = 0.5 * data[data.h == hs.max()][column].astype(float).min()
-    ax.loglog(hs, ref * (hs / hs.max()) ** 2, "k:", label="slope 2")
-    ax.set_xlabel("h [m]")
-    ax.set_ylabel("displacement error / G")
-    ax.set_title(name)
-    ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=8)
+families = list(dict.fromkeys(data.family))
+fig, axes = plt.subplots(len(dims), len(Gs), figsize=(6 * len(Gs), 4.5 * len(dims)),
+                         squeeze=False)
+for r, dim in enumerate(dims):
+    for c, G in enumerate(Gs):
+        ax = axes[r, c]
+        sub = data[(data.dim == dim) & (data.G == G)]
+        for family, d in sub.groupby("family", sort=False):
+            d = d.sort_values("h")
+            color = f"C{families.index(family)}"
+            ax.loglog(d.h, d.u_L2_error, "o-", color=color, label=family)
+            ax.loglog(d.h, d.u_L2_peak.astype(float), ":", color=color)
+        hs = np.array(sorted(sub.h.unique()))
+        if len(hs):
+            ref = 0.5 * sub[sub.h == hs.max()].u_L2_error.min()
+            ax.loglog(hs, ref * (hs / hs.max()) ** 2, "k--", lw=1, label="slope 2")
+        ax.set_title(f"{dim}D, G = {G:g}: L2 error at T (solid), largest over the period (dotted)",
+                     fontsize=9)
+        ax.set_xlabel("h [m]")
+        ax.set_ylabel("displacement error / G")
+        ax.grid(True, which="both", lw=0.3)
+        ax.legend(fontsize=8, loc="lower right")
 fig.tight_layout()
-fig.savefig(out, dpi=120)
+fig.savefig(out, dpi=110)
 print(f"wrote {out}")
