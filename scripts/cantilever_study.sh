@@ -2,8 +2,11 @@
 # Vibrating cantilever (BENCHMARKS.md section 2): the period for standard
 # MPM and the assumed-stress filter (both metrics) at 1, 2 and 4 cells
 # through the depth with 2x2 particles per cell, plus standard and
-# compliance filter with 3x3 and 4x4 particles. Writes OUT/table.txt:
-# cells ppc variant T T/T_EB T/T_Timoshenko. About 2 min on 2 cores.
+# compliance filter with 3x3 and 4x4 particles, and the enriched filter
+# field and CPDI (with the enriched compliance filter) at 1, 2, 4 cells.
+# Writes OUT/table.txt: cells ppc variant T T/T_EB T/T_Timoshenko.
+# A variant is [FAMILY:]standard|filter-mass|filter-compliance[-enriched].
+# About 4 min on 2 cores.
 # Usage: scripts/cantilever_study.sh [OUT]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,12 +16,15 @@ T_Ti=$("$root/scripts/timoshenko_period.py" | sed 's/.*T_Timoshenko = \([0-9.]*\
 table="$out/table.txt"
 echo "cells ppc variant T T/T_EB T/T_Timoshenko" > "$table"
 run() { # cells ppc variant
-  local n=$1 ppc=$2 variant=$3 filter=none metric=mass
-  case $variant in
+  local n=$1 ppc=$2 variant=$3 filter=none metric=mass family=standard
+  local field=Pian-Sumihara base=${3#*:}
+  [ "$base" != "$variant" ] && family=${variant%%:*}
+  case $base in *-enriched) field=enriched; base=${base%-enriched} ;; esac
+  case $base in
     filter-mass) filter="assumed stress" ;;
     filter-compliance) filter="assumed stress"; metric=compliance ;;
   esac
-  local dir="$out/${n}_${ppc}_${variant}"
+  local dir="$out/${n}_${ppc}_${variant/:/_}"
   cat > "$out/case.prm" <<PRM
 include $root/prm/cantilever_beam.prm
 subsection Grid
@@ -27,6 +33,10 @@ end
 subsection Output
   set Directory = $dir
 end
+subsection Shape functions
+  set Family = $family
+  set Domain outside the grid = clamp
+end
 subsection Bodies
   subsection Body 0
     set Subdivisions = $((10 * n)), $n
@@ -34,6 +44,7 @@ subsection Bodies
     subsection Locking remedies
       set Stress filter = $filter
       set Filter metric = $metric
+      set Filter field = $field
     end
   end
 end
@@ -48,6 +59,11 @@ print('$n $ppc $variant %.5f %.4f %.4f' % (T, T/T_EB, T/$T_Ti))" | tee -a "$tabl
 }
 for n in 1 2 4; do
   for v in standard filter-mass filter-compliance; do run $n 2 $v; done
+done
+for n in 1 2 4; do
+  for v in filter-compliance-enriched CPDI:standard CPDI:filter-compliance-enriched; do
+    run $n 2 $v
+  done
 done
 for ppc in 3 4; do
   for n in 1 2; do

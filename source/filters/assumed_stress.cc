@@ -42,7 +42,10 @@ namespace mpm
     AssumedStressProjection<dim>::AssumedStressProjection(
       const Tensor<2, dim>          &J0,
       const Metric                   metric,
-      const SymmetricTensor<4, dim> &compliance)
+      const SymmetricTensor<4, dim> &compliance,
+      const bool                     enriched)
+      : enriched(enriched)
+      , n_active(enriched ? n_beta : (dim == 2 ? 5 : 18))
     {
       // The scale of J0 only rescales beta; normalising keeps H well
       // conditioned whatever the cell size.
@@ -91,8 +94,8 @@ namespace mpm
     void
     AssumedStressProjection<dim>::natural_basis(const Point<dim> &xi,
                                                 unsigned int (&n)[n_voigt],
-                                                unsigned int (&col)[n_voigt][4],
-                                                double (&val)[n_voigt][4]) const
+                                                unsigned int (&col)[n_voigt][5],
+                                                double (&val)[n_voigt][5]) const
     {
       // natural coordinates in [-1, 1]
       double r[dim];
@@ -117,6 +120,11 @@ namespace mpm
           n[1] = 2, col[1][0] = 1, val[1][0] = 1., col[1][1] = 4,
           val[1][1] = r[0];
           n[2] = 1, col[2][0] = 2, val[2][0] = 1.;
+          if (enriched)
+            {
+              col[0][2] = 5, val[0][2] = r[0], n[0] = 3;
+              col[1][2] = 6, val[1][2] = r[1], n[1] = 3;
+            }
         }
       else
         {
@@ -127,6 +135,13 @@ namespace mpm
           set(3, {{12, 1.}, {13, r[0]}});
           set(4, {{14, 1.}, {15, r[1]}});
           set(5, {{16, 1.}, {17, r[2]}});
+          if (enriched)
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                col[a][n[a]] = 18 + a;
+                val[a][n[a]] = r[a];
+                ++n[a];
+              }
         }
     }
 
@@ -135,8 +150,8 @@ namespace mpm
     AssumedStressProjection<dim>::field(const Point<dim> &xi,
                                         const double     *beta) const
     {
-      unsigned int n[n_voigt], col[n_voigt][4];
-      double       val[n_voigt][4];
+      unsigned int n[n_voigt], col[n_voigt][5];
+      double       val[n_voigt][5];
       natural_basis(xi, n, col, val);
       double natural[n_voigt];
       for (unsigned int a = 0; a < n_voigt; ++a)
@@ -167,8 +182,8 @@ namespace mpm
       Matrix       H     = Matrix::Zero();
       Vector       R     = Vector::Zero();
       double       total = 0;
-      unsigned int n[n_voigt], col[n_voigt][4];
-      double       val[n_voigt][4];
+      unsigned int n[n_voigt], col[n_voigt][5];
+      double       val[n_voigt][5];
       for (const auto &p : samples)
         {
           if (!(p.weight > 0))
@@ -211,7 +226,7 @@ namespace mpm
       // of a 3D collision drifted apart by 1e-4.
       double L[n_beta][n_beta], D[n_beta];
       bool   regular = true;
-      for (unsigned int j = 0; j < n_beta && regular; ++j)
+      for (unsigned int j = 0; j < n_active && regular; ++j)
         {
           double d = H(j, j);
           for (unsigned int k = 0; k < j; ++k)
@@ -222,7 +237,7 @@ namespace mpm
               break;
             }
           D[j] = d;
-          for (unsigned int i = j + 1; i < n_beta; ++i)
+          for (unsigned int i = j + 1; i < n_active; ++i)
             {
               double l = H(i, j);
               for (unsigned int k = 0; k < j; ++k)
@@ -233,17 +248,17 @@ namespace mpm
       if (regular)
         {
           // L y = R, D z = y, L^T beta = z
-          for (unsigned int i = 0; i < n_beta; ++i)
+          for (unsigned int i = 0; i < n_active; ++i)
             {
               double y = R(i);
               for (unsigned int k = 0; k < i; ++k)
                 y -= L[i][k] * beta[k];
               beta[i] = y;
             }
-          for (unsigned int i = 0; i < n_beta; ++i)
+          for (unsigned int i = 0; i < n_active; ++i)
             beta[i] /= D[i];
-          for (unsigned int i = n_beta; i-- > 0;)
-            for (unsigned int k = i + 1; k < n_beta; ++k)
+          for (unsigned int i = n_active; i-- > 0;)
+            for (unsigned int k = i + 1; k < n_active; ++k)
               beta[i] -= L[k][i] * beta[k];
         }
       else

@@ -14,6 +14,7 @@ namespace mpm
       , metric(bodies.size(), Metric::mass)
       , compliance(bodies.size())
       , projections(bodies.size())
+      , enriched(bodies.size(), 0)
       , last_J0(bodies.size())
       , material(bodies.size())
       , out_of_plane_nu(bodies.size(), 0.)
@@ -21,6 +22,7 @@ namespace mpm
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           is_filtered[b] = bodies[b].prm.assumed_stress_filter;
+          enriched[b]    = bodies[b].prm.enriched_filter;
           material[b]    = bodies[b].material.get();
           any_filtered   = any_filtered || is_filtered[b];
           metric[b] =
@@ -61,9 +63,8 @@ namespace mpm
           if (!projections[b] || !(J0 == last_J0[b]))
             {
               projections[b] =
-                std::make_unique<AssumedStressProjection<dim>>(J0,
-                                                               metric[b],
-                                                               compliance[b]);
+                std::make_unique<AssumedStressProjection<dim>>(
+                  J0, metric[b], compliance[b], enriched[b]);
               last_J0[b] = J0;
             }
           const Result result = projections[b]->project(samples, beta);

@@ -432,6 +432,16 @@ namespace mpm
                         "projection (inner product C^-1, weights V_p), for "
                         "materials with elastic moduli.");
       prm.declare_entry(
+        "Filter field",
+        "Pian-Sumihara",
+        Patterns::Selection("Pian-Sumihara|enriched"),
+        "The assumed-stress field of Stress filter = assumed stress. "
+        "Pian-Sumihara: the seed's 5-beta (2D) / 18-beta (3D) field. "
+        "enriched: adds the linear variation of each normal stress along "
+        "its own direction (7 / 21 betas), which does no work on a filled "
+        "cell's Q1 velocities but keeps a stress that varies along the "
+        "motion of a convecting body (doc/theory.md 4.8).");
+      prm.declare_entry(
         "Volumetric smoothing",
         "none",
         Patterns::Selection("none|cell|node"),
@@ -472,6 +482,7 @@ namespace mpm
         prm.get("Stress filter") == "convection correction";
       convection_body_force = prm.get_bool("Body force correction");
       compliance_metric     = prm.get("Filter metric") == "compliance";
+      enriched_filter       = prm.get("Filter field") == "enriched";
       const std::string vs  = prm.get("Volumetric smoothing");
       volumetric_smoothing = vs == "cell" ? filters::VolumetricSmoothing::cell :
                              vs == "node" ? filters::VolumetricSmoothing::node :

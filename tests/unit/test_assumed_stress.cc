@@ -76,7 +76,7 @@ namespace
 
   template <int dim>
   void
-  check_projection(const Metric metric)
+  check_projection(const Metric metric, const bool enriched = false)
   {
     const auto compliance = isotropic_compliance<dim>(1e6, 0.3, false);
     for (unsigned int seed = 0; seed < 5; ++seed)
@@ -84,7 +84,8 @@ namespace
         const auto                         cell = distorted_cell<dim>(seed);
         const AssumedStressProjection<dim> P(centre_jacobian(cell),
                                              metric,
-                                             compliance);
+                                             compliance,
+                                             enriched);
         const unsigned int                 n = dim == 2 ? 9 : 27;
 
         // idempotent
@@ -112,7 +113,7 @@ namespace
 
   template <int dim>
   void
-  check_rotation(const Metric metric)
+  check_rotation(const Metric metric, const bool enriched = false)
   {
     const auto compliance = isotropic_compliance<dim>(1e6, 0.3, false);
     const auto cell       = distorted_cell<dim>(3);
@@ -123,8 +124,8 @@ namespace
     Q[0][0] = c, Q[0][1] = -s, Q[1][0] = s, Q[1][1] = c;
     if (dim == 3)
       Q[2][2] = 1;
-    const AssumedStressProjection<dim> P(J0, metric, compliance);
-    const AssumedStressProjection<dim> PQ(Q * J0, metric, compliance);
+    const AssumedStressProjection<dim> P(J0, metric, compliance, enriched);
+    const AssumedStressProjection<dim> PQ(Q * J0, metric, compliance, enriched);
     auto original = samples<dim>(dim == 2 ? 9 : 27, 4);
     auto rotated  = original;
     for (auto &p : rotated)
@@ -153,6 +154,41 @@ BOOST_AUTO_TEST_CASE(projection_3d)
 {
   check_projection<3>(Metric::mass);
   check_projection<3>(Metric::compliance);
+}
+
+// The enriched field (Filter field = enriched): the same projection
+// properties, and it keeps a normal stress varying along its own direction,
+// which the Pian-Sumihara field cannot.
+BOOST_AUTO_TEST_CASE(enriched_projection)
+{
+  check_projection<2>(Metric::mass, true);
+  check_projection<2>(Metric::compliance, true);
+  check_projection<3>(Metric::mass, true);
+  check_projection<3>(Metric::compliance, true);
+  check_rotation<2>(Metric::mass, true);
+  check_rotation<3>(Metric::compliance, true);
+
+  // sigma_xx = 10 + 3 x on a unit box cell (x = xi): kept by the enriched
+  // field, flattened to its mean by Pian-Sumihara
+  const Tensor<2, 2> J = unit_symmetric_tensor<2>();
+  std::vector<StressSample<2>> s;
+  for (const double x : {0.2, 0.4, 0.6, 0.8})
+    for (const double y : {0.25, 0.75})
+      {
+        StressSample<2> p;
+        p.xi           = Point<2>(x, y);
+        p.weight       = 1;
+        p.stress[0][0] = 10 + 3 * x;
+        s.push_back(p);
+      }
+  auto enriched = s, plain = s;
+  AssumedStressProjection<2>(J, Metric::mass, {}, true).project(enriched);
+  AssumedStressProjection<2>(J, Metric::mass).project(plain);
+  BOOST_TEST(max_difference(enriched, s) < 1e-12);
+  BOOST_TEST(max_difference(plain, s) > 0.5);
+  BOOST_TEST(AssumedStressProjection<2>(J, Metric::mass, {}, true).size() == 7u);
+  BOOST_TEST(AssumedStressProjection<3>(unit_symmetric_tensor<3>(), Metric::mass)
+               .size() == 18u);
 }
 
 BOOST_AUTO_TEST_CASE(commutes_with_rotation)

@@ -40,12 +40,22 @@ namespace mpm
      * Cells whose H is singular or ill-conditioned (one particle,
      * collinear particles) fall back to the constant-stress subspace; a
      * cell without weight is left unchanged. Never produces NaN.
+     *
+     * The enriched field adds the missing linear terms of the normal
+     * stresses: 2D sigma_ss += b6 s, sigma_tt += b7 t (7 betas); 3D
+     * sigma_11 += b19 xi, sigma_22 += b20 eta, sigma_33 += b21 zeta (21).
+     * Over a whole cell they do no work on Q1 velocities (so a filled
+     * cell's stiffness is Pian-Sumihara's), but they keep a stress that
+     * varies along its own direction, as in a bar moving along itself
+     * (doc/theory.md 4.8).
      */
     template <int dim>
     class AssumedStressProjection
     {
     public:
-      static constexpr unsigned int n_beta  = dim == 2 ? 5 : 18;
+      /// Coefficients of the largest field (the enriched one); the
+      /// Pian-Sumihara field uses the first size() of them.
+      static constexpr unsigned int n_beta  = dim == 2 ? 7 : 21;
       static constexpr unsigned int n_voigt = dim == 2 ? 3 : 6;
 
       /// What a projection did.
@@ -63,7 +73,15 @@ namespace mpm
       AssumedStressProjection(const dealii::Tensor<2, dim> &J0,
                               const Metric                  metric,
                               const dealii::SymmetricTensor<4, dim> &
-                                compliance = dealii::SymmetricTensor<4, dim>());
+                                compliance = dealii::SymmetricTensor<4, dim>(),
+                              const bool enriched = false);
+
+      /// Number of coefficients of this field (5/18, or 7/21 enriched).
+      unsigned int
+      size() const
+      {
+        return n_active;
+      }
 
       /// Replace the samples' stresses by the projected field; its
       /// coefficients go to @p beta (n_beta values) if given.
@@ -82,8 +100,11 @@ namespace mpm
       void
       natural_basis(const dealii::Point<dim> &xi,
                     unsigned int (&n_terms)[n_voigt],
-                    unsigned int (&column)[n_voigt][4],
-                    double (&value)[n_voigt][4]) const;
+                    unsigned int (&column)[n_voigt][5],
+                    double (&value)[n_voigt][5]) const;
+
+      bool         enriched;
+      unsigned int n_active;
 
       /// Cartesian Voigt components of natural unit stresses (columns): T.
       double transform[n_voigt][n_voigt];

@@ -90,6 +90,7 @@ namespace mpm
       std::vector<Metric>                                        metric;
       std::vector<dealii::SymmetricTensor<4, dim>>               compliance;
       std::vector<std::unique_ptr<AssumedStressProjection<dim>>> projections;
+      std::vector<char> enriched; ///< Filter field = enriched, per body
       std::vector<dealii::Tensor<2, dim>>                        last_J0;
       std::vector<StressSample<dim>>                             samples;
       std::vector<double *>                                      targets;

@@ -124,6 +124,7 @@ namespace mpm
       /// Locking remedies of this body (doc/theory.md).
       bool                         assumed_stress_filter = false;
       bool                         compliance_metric     = false;
+      bool                         enriched_filter       = false;
       filters::VolumetricSmoothing volumetric_smoothing =
         filters::VolumetricSmoothing::none;
       bool convection_correction = false; ///< 1D only
