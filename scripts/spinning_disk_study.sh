@@ -5,7 +5,8 @@
 # sigma_rt, one panel per variant).
 # Usage: scripts/spinning_disk_study.sh [OUT]   (default results/spinning_disk)
 # A variant is a family with optional suffixes: +filter (assumed-stress
-# filter) and +APIC (Velocity transfer = APIC), e.g. CPDI+filter+APIC.
+# filter), +enriched (the filter with Filter field = enriched) and +APIC
+# (Velocity transfer = APIC), e.g. CPDI+enriched+APIC.
 # Environment: END (end time, default 6.2), CELLS (grid cells per direction
 # over [-1.25,1.25], default 50: h = 0.05), CFL (default 0.5), VARIANTS
 # (default below), NP (MPI ranks, default 1), MPM (executable), PLOT (the
@@ -27,8 +28,9 @@ echo "variant,h,cfl,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_c
 start=$(date +%s)
 for v in $variants; do
   family=${v%%+*}
-  filter="" transfer=FLIP
-  case "$v" in *+filter*) filter="set Stress filter = assumed stress" ;; esac
+  filter="" transfer=FLIP field=Pian-Sumihara
+  case "$v" in *+filter*|*+enriched*) filter="set Stress filter = assumed stress" ;; esac
+  case "$v" in *+enriched*) field=enriched ;; esac
   case "$v" in *+APIC*) transfer=APIC ;; esac
   dir="$out/$v"
   rm -rf "$dir"; mkdir -p "$dir"
@@ -54,6 +56,7 @@ subsection Bodies
   subsection Body 0
     subsection Locking remedies
       $filter
+      set Filter field = $field
     end
   end
 end
