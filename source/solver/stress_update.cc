@@ -115,16 +115,8 @@ namespace mpm
           return true;
         }
       geo.values(p.get_reference_location(), N);
-      const auto status = domains->evaluate(cell_index, p.get_reference_location(),
-                                            prop,
-                                            stencil);
-      if (status != decltype(status)::ok)
-        {
-          if (result.error.empty())
-            result.error =
-              domains->message(status, p.get_id(), p.get_location());
-          return false;
-        }
+      if (!domains->evaluate(cell_index, p, stencil, result.error))
+        return false;
       using K = KinematicsLayout<dim>;
       k.grad_v = Tensor<2, dim>();
       for (unsigned int e = 0; e < stencil.n; ++e)

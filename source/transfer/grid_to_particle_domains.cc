@@ -33,7 +33,6 @@ namespace mpm
         }
       using L      = ParticleLayout<dim>;
       using K      = KinematicsLayout<dim>;
-      using Status = typename shape_functions::DomainShapeFunctions<dim>::Status;
       const double *in        = kinematics.begin();
       std::string   error;
       shape_functions::Stencil<dim>       st;
@@ -43,16 +42,8 @@ namespace mpm
           for (auto &p : pic)
             {
               double      *prop   = p.get_properties().data();
-              const Status status = domains.evaluate(index, p.get_reference_location(),
-                                                     prop,
-                                                     st);
-              if (status != Status::ok)
-                {
-                  if (error.empty())
-                    error =
-                      domains.message(status, p.get_id(), p.get_location());
-                  continue;
-                }
+              if (!domains.evaluate(index, p, st, error))
+                continue;
               double         v_grid[dim] = {}, dv[dim] = {};
               Tensor<2, dim> C; // APIC: sum_i v_i (x) grad S_ip
               for (unsigned int k = 0; k < st.n; ++k)

@@ -162,26 +162,14 @@ namespace mpm
                 if (!by_field)
                   sigma = -V * in_plane_stress<dim>(prop + L::stress);
 
-                double ext[dim] = {};
-                if (body_loaded[b])
-                  {
-                    bodies[b].body_force_at(p.get_location(),
+                double ext[dim];
+                bodies[b].external_force_at(p.get_location(),
                                             prop + L::X,
+                                            m,
+                                            prop[L::traction_area],
                                             time,
+                                            body_loaded[b],
                                             ext);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      ext[d] *= m;
-                  }
-                if (prop[L::traction_area] > 0)
-                  {
-                    double t[dim];
-                    bodies[b].traction_at(p.get_location(),
-                                          prop + L::X,
-                                          time,
-                                          t);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      ext[d] += t[d] * prop[L::traction_area];
-                  }
                 for (unsigned int v = 0; v < nv; ++v)
                   {
                     const Tensor<1, dim> f = sigma * G[v];

@@ -24,8 +24,6 @@ namespace mpm
       const unsigned int                                affine)
     {
       using L                  = ParticleLayout<dim>;
-      using Status             = typename shape_functions::
-        DomainShapeFunctions<dim>::Status;
       const bool momentum_only = content == P2GContent::momentum;
       const unsigned int nc =
         momentum_only ? dim : P2GLayout<dim>::n_components;
@@ -72,43 +70,22 @@ namespace mpm
           for (const auto &p : pic)
             {
               const double *prop = p.get_properties().data();
-              const Status  status =
-                domains.evaluate(index, p.get_reference_location(),
-                                 prop,
-                                 st);
-              if (status != Status::ok)
-                {
-                  if (error.empty())
-                    error =
-                      domains.message(status, p.get_id(), p.get_location());
-                  continue;
-                }
-              const double m = prop[L::mass];
+              if (!domains.evaluate(index, p, st, error))
+                continue;
+              const double   m = prop[L::mass];
               Tensor<2, dim> sigma;
               double         ext[dim] = {};
               if (do_force)
                 {
                   const unsigned int b = static_cast<unsigned int>(prop[L::body]);
                   sigma = -prop[L::volume] * in_plane_stress<dim>(prop + L::stress);
-                  if (body_loaded[b])
-                    {
-                      bodies[b].body_force_at(p.get_location(),
+                  bodies[b].external_force_at(p.get_location(),
                                               prop + L::X,
+                                              m,
+                                              prop[L::traction_area],
                                               time,
+                                              body_loaded[b],
                                               ext);
-                      for (unsigned int d = 0; d < dim; ++d)
-                        ext[d] *= m;
-                    }
-                  if (prop[L::traction_area] > 0)
-                    {
-                      double t[dim];
-                      bodies[b].traction_at(p.get_location(),
-                                            prop + L::X,
-                                            time,
-                                            t);
-                      for (unsigned int d = 0; d < dim; ++d)
-                        ext[d] += t[d] * prop[L::traction_area];
-                    }
                 }
               // APIC: the affine velocity C_p
               Tensor<2, dim> C;

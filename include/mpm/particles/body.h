@@ -69,6 +69,34 @@ namespace mpm
 
     bool
     has_body_force() const;
+
+    /// The external force on a particle, m b(x, X, t) + A t(x, X, t)
+    /// (@p loaded: has_body_force(), cached by the caller).
+    void
+    external_force_at(const dealii::Point<dim> &x,
+                      const double             *X,
+                      const double              mass,
+                      const double              traction_area,
+                      const double              t,
+                      const bool                loaded,
+                      double                   *out) const
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        out[d] = 0;
+      if (loaded)
+        {
+          body_force_at(x, X, t, out);
+          for (unsigned int d = 0; d < dim; ++d)
+            out[d] *= mass;
+        }
+      if (traction_area > 0)
+        {
+          double traction[dim];
+          traction_at(x, X, t, traction);
+          for (unsigned int d = 0; d < dim; ++d)
+            out[d] += traction[d] * traction_area;
+        }
+    }
   };
 
   /// Variable names of the spatial coordinates ("x,y") and with the

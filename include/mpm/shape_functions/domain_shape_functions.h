@@ -84,6 +84,29 @@ namespace mpm
                CornerWeights<dim>       *corners = nullptr) const;
 
       /**
+       * evaluate() for a particle of deal.II's ParticleHandler in the
+       * cell with active index @p cell; on failure sets @p error (if still
+       * empty) to message() and returns false.
+       */
+      template <typename Particle>
+      bool
+      evaluate(const unsigned int  cell,
+               const Particle     &p,
+               Stencil<dim>       &stencil,
+               std::string        &error) const
+      {
+        const Status status = evaluate(cell,
+                                       p.get_reference_location(),
+                                       p.get_properties().data(),
+                                       stencil);
+        if (status == Status::ok)
+          return true;
+        if (error.empty())
+          error = message(status, p.get_id(), p.get_location());
+        return false;
+      }
+
+      /**
        * CPDI2 only: move the corners of the particle in @p cell at @p xi
        * by dt times the grid velocity there (@p velocity: nodal values,
        * @p stride numbers per node).
