@@ -62,9 +62,8 @@ namespace mpm
           // the geometry changes.
           if (!projections[b] || !(J0 == last_J0[b]))
             {
-              projections[b] =
-                std::make_unique<AssumedStressProjection<dim>>(
-                  J0, metric[b], compliance[b], enriched[b]);
+              projections[b] = std::make_unique<AssumedStressProjection<dim>>(
+                J0, metric[b], compliance[b], enriched[b]);
               last_J0[b] = J0;
             }
           const Result result = projections[b]->project(samples, beta);

@@ -114,7 +114,8 @@ namespace mpm
           continue;
         for (const unsigned int f : cell->face_indices())
           {
-            unsigned int &n = neighbors[cell->active_cell_index() * 2 * dim + f];
+            unsigned int &n =
+              neighbors[cell->active_cell_index() * 2 * dim + f];
             if (cell->at_boundary(f))
               n = outside_grid;
             else

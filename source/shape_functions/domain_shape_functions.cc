@@ -145,8 +145,8 @@ namespace mpm
                                              const double      *prop,
                                              Stencil<dim>      &s) const
     {
-      using L    = ParticleLayout<dim>;
-      using Grid = BackgroundGrid<dim>;
+      using L          = ParticleLayout<dim>;
+      using Grid       = BackgroundGrid<dim>;
       Tensor<1, dim> l = gimp_half_widths(load_matrix<dim>(prop + L::domain));
       if (which == Family::cpgimp)
         {
@@ -211,7 +211,7 @@ namespace mpm
       s.n = 0;
       for (unsigned int k = 0; k < Utilities::fixed_power<dim>(3u); ++k)
         {
-          unsigned int c = cell;
+          unsigned int c    = cell;
           bool         skip = false;
           for (unsigned int d = 0, r = k; d < dim; ++d, r /= 3)
             {
@@ -271,7 +271,8 @@ namespace mpm
         {
           unsigned int corner_cell;
           Point<dim>   corner_xi;
-          const Status status = locate(cell, cw.x[c], xi, corner_cell, corner_xi);
+          const Status status =
+            locate(cell, cw.x[c], xi, corner_cell, corner_xi);
           if (status != Status::ok)
             return status;
           double N[nv];

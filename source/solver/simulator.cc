@@ -224,9 +224,9 @@ namespace mpm
       {
         // APIC starts from the gradient of the initial velocity (central
         // differences of the expression)
-        const double h =
-          1e-6 * std::max(1., std::sqrt(s.domain.norm_square()) +
-                                std::sqrt(s.position.square()));
+        const double h = 1e-6 * std::max(1.,
+                                         std::sqrt(s.domain.norm_square()) +
+                                           std::sqrt(s.position.square()));
         for (unsigned int j = 0; j < dim; ++j)
           {
             Point<dim> plus = s.position, minus = s.position;
@@ -492,7 +492,7 @@ namespace mpm
       }
     {
       TimerOutput::Scope t(timer, "P2G");
-      const auto e = transfer::particle_to_grid(background,
+      const auto         e = transfer::particle_to_grid(background,
                                                 particle_handler,
                                                 bodies,
                                                 current_time,
@@ -538,15 +538,15 @@ namespace mpm
                                            *domain_functions,
                                            fused_remap ? &remap : nullptr,
                                            layout.affine()) :
-        transfer::grid_to_particle(background,
-                                   particle_handler,
-                                   kinematics,
-                                   dt,
-                                   params.time.flip_fraction,
-                                   static_cast<const shape_functions::
-                                                 DomainShapeFunctions<dim> *>(
-                                     nullptr),
-                                   layout.affine());
+        transfer::grid_to_particle(
+          background,
+          particle_handler,
+          kinematics,
+          dt,
+          params.time.flip_fraction,
+          static_cast<const shape_functions::DomainShapeFunctions<dim> *>(
+            nullptr),
+          layout.affine());
     if (local_error.empty())
       local_error = e;
   }
@@ -590,7 +590,7 @@ namespace mpm
                                         dt,
                                         &volume_sums,
                                         domain_functions.get());
-    stable_dt = r.stable_time_step;
+    stable_dt            = r.stable_time_step;
     if (local_error.empty())
       local_error = r.error;
   }

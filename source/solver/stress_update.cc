@@ -102,7 +102,7 @@ namespace mpm
     // (for the node average). Standard MPM takes grad N of the cell; the
     // domain families their stencil. False for a bad particle domain.
     shape_functions::Stencil<dim> stencil;
-    auto kinematics_of = [&](const auto          &p,
+    auto                          kinematics_of = [&](const auto          &p,
                              const auto          &geo,
                              const unsigned int  *nodes,
                              const unsigned int   cell_index,
@@ -117,7 +117,7 @@ namespace mpm
       geo.values(p.get_reference_location(), N);
       if (!domains->evaluate(cell_index, p, stencil, result.error))
         return false;
-      using K = KinematicsLayout<dim>;
+      using K  = KinematicsLayout<dim>;
       k.grad_v = Tensor<2, dim>();
       for (unsigned int e = 0; e < stencil.n; ++e)
         {
@@ -127,7 +127,7 @@ namespace mpm
               k.grad_v[i][j] += node[K::velocity + i] * stencil.gradient[e][j];
         }
       const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
-      k.F                        = F_old + dt * k.grad_v * F_old;
+      k.F = F_old + dt * k.grad_v * F_old;
       return true;
     };
 
@@ -152,8 +152,8 @@ namespace mpm
                       p, geo, nodes, cell->active_cell_index(), prop, k))
                   continue;
                 const auto &[grad_v, F] = k;
-                const double J = determinant(F);
-                const double m = prop[L::mass];
+                const double J          = determinant(F);
+                const double m          = prop[L::mass];
                 for (unsigned int v = 0; v < nv; ++v)
                   {
                     double *node = out + nodes[v] * n_volume_components;
@@ -274,8 +274,8 @@ namespace mpm
               {
                 // keep the cell average's bookkeeping in step
                 if (smoothing[body_of(prop)] == Smoothing::cell)
-                  buffer.push_back({Tensor<2, dim>(),
-                                    load_matrix<dim>(prop + L::F)});
+                  buffer.push_back(
+                    {Tensor<2, dim>(), load_matrix<dim>(prop + L::F)});
                 continue;
               }
             auto &[grad_v, F] = k;

@@ -53,8 +53,8 @@ namespace mpm
                   store_matrix<dim>(C, p.get_properties().data() + affine);
                 }
               else
-                shape_functions::Q1Cell<dim>::values(
-                  p.get_reference_location(), N);
+                shape_functions::Q1Cell<dim>::values(p.get_reference_location(),
+                                                     N);
               double v_grid[dim] = {}, dv[dim] = {};
               for (unsigned int v = 0; v < nv; ++v)
                 {
@@ -65,25 +65,7 @@ namespace mpm
                       dv[d] += N[v] * k[K::increment + d];
                     }
                 }
-              double    *prop = p.get_properties().data();
-              Point<dim> x    = p.get_location();
-              bool       ok   = true;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  double &vp = prop[L::velocity + d];
-                  vp = affine ? v_grid[d] :
-                                flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
-                  x[d] += dt * v_grid[d];
-                  ok = ok && std::isfinite(vp) && std::isfinite(x[d]);
-                }
-              if (!ok && error.empty())
-                {
-                  std::ostringstream s;
-                  s << "non-finite velocity or position of particle "
-                    << p.get_id() << " near (" << p.get_location() << ")";
-                  error = s.str();
-                }
-              p.set_location(x);
+              move_particle<dim>(p, v_grid, dv, flip, affine != 0, dt, error);
             }
         });
       return error;

@@ -31,17 +31,17 @@ namespace mpm
           *remap   = 0.;
           momentum = remap->begin();
         }
-      using L      = ParticleLayout<dim>;
-      using K      = KinematicsLayout<dim>;
-      const double *in        = kinematics.begin();
-      std::string   error;
-      shape_functions::Stencil<dim>       st;
+      using L                          = ParticleLayout<dim>;
+      using K                          = KinematicsLayout<dim>;
+      const double                 *in = kinematics.begin();
+      std::string                   error;
+      shape_functions::Stencil<dim> st;
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
           const unsigned int index = cell->active_cell_index();
           for (auto &p : pic)
             {
-              double      *prop   = p.get_properties().data();
+              double *prop = p.get_properties().data();
               if (!domains.evaluate(index, p, st, error))
                 continue;
               double         v_grid[dim] = {}, dv[dim] = {};
@@ -61,16 +61,7 @@ namespace mpm
                 }
               if (affine)
                 store_matrix<dim>(C, prop + affine);
-              Point<dim> x  = p.get_location();
-              bool       ok = true;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  double &vp = prop[L::velocity + d];
-                  vp = affine ? v_grid[d] :
-                                flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
-                  x[d] += dt * v_grid[d];
-                  ok = ok && std::isfinite(vp) && std::isfinite(x[d]);
-                }
+              move_particle<dim>(p, v_grid, dv, flip, affine != 0, dt, error);
               // MUSL: the new particle momentum back to the nodes, with
               // the same weights
               if (momentum)
@@ -91,14 +82,6 @@ namespace mpm
                           st.value[k] * prop[L::mass] * v[d];
                     }
                 }
-              if (!ok && error.empty())
-                {
-                  std::ostringstream s;
-                  s << "non-finite velocity or position of particle "
-                    << p.get_id() << " near (" << p.get_location() << ")";
-                  error = s.str();
-                }
-              p.set_location(x);
             }
         });
       if (remap)
@@ -115,8 +98,9 @@ namespace mpm
       const double                                      dt,
       const shape_functions::DomainShapeFunctions<dim> &domains)
     {
-      using K      = KinematicsLayout<dim>;
-      using Status = typename shape_functions::DomainShapeFunctions<dim>::Status;
+      using K = KinematicsLayout<dim>;
+      using Status =
+        typename shape_functions::DomainShapeFunctions<dim>::Status;
       std::string error;
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
@@ -136,21 +120,21 @@ namespace mpm
       return error;
     }
 
-#define MPM_INSTANTIATE(d)                                          \
-  template std::string grid_to_particle_domains<d>(                 \
-    const BackgroundGrid<d> &,                                      \
-    Particles::ParticleHandler<d> &,                                \
-    const NodalVector &,                                            \
-    double,                                                         \
-    double,                                                         \
-    const shape_functions::DomainShapeFunctions<d> &,             \
-    NodalVector *,                                                \
-    unsigned int);                                                \
-  template std::string move_domain_corners<d>(                      \
-    const BackgroundGrid<d> &,                                      \
-    Particles::ParticleHandler<d> &,                                \
-    const NodalVector &,                                            \
-    double,                                                         \
+#define MPM_INSTANTIATE(d)                            \
+  template std::string grid_to_particle_domains<d>(   \
+    const BackgroundGrid<d> &,                        \
+    Particles::ParticleHandler<d> &,                  \
+    const NodalVector &,                              \
+    double,                                           \
+    double,                                           \
+    const shape_functions::DomainShapeFunctions<d> &, \
+    NodalVector *,                                    \
+    unsigned int);                                    \
+  template std::string move_domain_corners<d>(        \
+    const BackgroundGrid<d> &,                        \
+    Particles::ParticleHandler<d> &,                  \
+    const NodalVector &,                              \
+    double,                                           \
     const shape_functions::DomainShapeFunctions<d> &);
     MPM_INSTANTIATE(1)
     MPM_INSTANTIATE(2)

@@ -23,8 +23,8 @@ namespace mpm
       const shape_functions::DomainShapeFunctions<dim> &domains,
       const unsigned int                                affine)
     {
-      using L                  = ParticleLayout<dim>;
-      const bool momentum_only = content == P2GContent::momentum;
+      using L                          = ParticleLayout<dim>;
+      const bool         momentum_only = content == P2GContent::momentum;
       const unsigned int nc =
         momentum_only ? dim : P2GLayout<dim>::n_components;
       const unsigned int off_p   = momentum_only ? 0 : 1;
@@ -53,19 +53,19 @@ namespace mpm
         grid, particles, [&](const auto &cell, const auto &pic) {
           if constexpr (dim > 1)
             if (filtering)
-            {
-              // Project the filtered bodies' stresses of this cell first;
-              // the force below then uses the projected stresses.
-              std::fill(present.begin(), present.end(), 0);
-              for (const auto &p : pic)
-                present[static_cast<unsigned int>(
-                  p.get_properties()[L::body])] = 1;
-              const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
-              double               beta[21]; // n_beta of 3D, the largest
-              for (unsigned int b = 0; b < bodies.size(); ++b)
-                if (present[b] && filter->filtered(b))
-                  filter->filter_cell(J0, pic, b, beta);
-            }
+              {
+                // Project the filtered bodies' stresses of this cell first;
+                // the force below then uses the projected stresses.
+                std::fill(present.begin(), present.end(), 0);
+                for (const auto &p : pic)
+                  present[static_cast<unsigned int>(
+                    p.get_properties()[L::body])] = 1;
+                const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
+                double               beta[21]; // n_beta of 3D, the largest
+                for (unsigned int b = 0; b < bodies.size(); ++b)
+                  if (present[b] && filter->filtered(b))
+                    filter->filter_cell(J0, pic, b, beta);
+              }
           const unsigned int index = cell->active_cell_index();
           for (const auto &p : pic)
             {
@@ -77,8 +77,10 @@ namespace mpm
               double         ext[dim] = {};
               if (do_force)
                 {
-                  const unsigned int b = static_cast<unsigned int>(prop[L::body]);
-                  sigma = -prop[L::volume] * in_plane_stress<dim>(prop + L::stress);
+                  const unsigned int b =
+                    static_cast<unsigned int>(prop[L::body]);
+                  sigma =
+                    -prop[L::volume] * in_plane_stress<dim>(prop + L::stress);
                   bodies[b].external_force_at(p.get_location(),
                                               prop + L::X,
                                               m,
@@ -128,16 +130,16 @@ namespace mpm
       return error;
     }
 
-#define MPM_INSTANTIATE(d)                                         \
-  template std::string particle_to_grid_domains<d>(                \
-    const BackgroundGrid<d> &,                                     \
-    Particles::ParticleHandler<d> &,                               \
-    const std::vector<Body<d>> &,                                  \
-    double,                                                        \
-    P2GContent,                                                    \
-    NodalVector &,                                                 \
-    filters::StressFilter<d> *,                                    \
-    const shape_functions::DomainShapeFunctions<d> &,              \
+#define MPM_INSTANTIATE(d)                            \
+  template std::string particle_to_grid_domains<d>(   \
+    const BackgroundGrid<d> &,                        \
+    Particles::ParticleHandler<d> &,                  \
+    const std::vector<Body<d>> &,                     \
+    double,                                           \
+    P2GContent,                                       \
+    NodalVector &,                                    \
+    filters::StressFilter<d> *,                       \
+    const shape_functions::DomainShapeFunctions<d> &, \
     unsigned int);
     MPM_INSTANTIATE(1)
     MPM_INSTANTIATE(2)

@@ -28,12 +28,14 @@ subsection Grid
   set Subdivisions = 16
 end
 subsection Shape functions
-  set Family = )" + family + R"(
+  set Family = )" + family +
+                        R"(
 end
 subsection Time stepping
   set Time step control = fixed
   set Time step = 1e-3
-  set Velocity transfer = )" + transfer + R"(
+  set Velocity transfer = )" +
+                        transfer + R"(
 end
 subsection Bodies
   subsection Body 0
@@ -52,7 +54,7 @@ subsection Bodies
     end
   end
 end)");
-    auto &sim = *c.simulator;
+    auto             &sim = *c.simulator;
     sim.do_time_step(1e-3);
     Measured m{0, 0};
     if (transfer == "APIC")

@@ -170,7 +170,7 @@ BOOST_AUTO_TEST_CASE(enriched_projection)
 
   // sigma_xx = 10 + 3 x on a unit box cell (x = xi): kept by the enriched
   // field, flattened to its mean by Pian-Sumihara
-  const Tensor<2, 2> J = unit_symmetric_tensor<2>();
+  const Tensor<2, 2>           J = unit_symmetric_tensor<2>();
   std::vector<StressSample<2>> s;
   for (const double x : {0.2, 0.4, 0.6, 0.8})
     for (const double y : {0.25, 0.75})
@@ -186,9 +186,11 @@ BOOST_AUTO_TEST_CASE(enriched_projection)
   AssumedStressProjection<2>(J, Metric::mass).project(plain);
   BOOST_TEST(max_difference(enriched, s) < 1e-12);
   BOOST_TEST(max_difference(plain, s) > 0.5);
-  BOOST_TEST(AssumedStressProjection<2>(J, Metric::mass, {}, true).size() == 7u);
-  BOOST_TEST(AssumedStressProjection<3>(unit_symmetric_tensor<3>(), Metric::mass)
-               .size() == 18u);
+  BOOST_TEST(AssumedStressProjection<2>(J, Metric::mass, {}, true).size() ==
+             7u);
+  BOOST_TEST(
+    AssumedStressProjection<3>(unit_symmetric_tensor<3>(), Metric::mass)
+      .size() == 18u);
 }
 
 BOOST_AUTO_TEST_CASE(commutes_with_rotation)

@@ -72,8 +72,8 @@ namespace mpm
        */
       AssumedStressProjection(const dealii::Tensor<2, dim> &J0,
                               const Metric                  metric,
-                              const dealii::SymmetricTensor<4, dim> &
-                                compliance = dealii::SymmetricTensor<4, dim>(),
+                              const dealii::SymmetricTensor<4, dim>
+                                &compliance = dealii::SymmetricTensor<4, dim>(),
                               const bool enriched = false);
 
       /// Number of coefficients of this field (5/18, or 7/21 enriched).

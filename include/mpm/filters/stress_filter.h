@@ -91,10 +91,10 @@ namespace mpm
       std::vector<dealii::SymmetricTensor<4, dim>>               compliance;
       std::vector<std::unique_ptr<AssumedStressProjection<dim>>> projections;
       std::vector<char> enriched; ///< Filter field = enriched, per body
-      std::vector<dealii::Tensor<2, dim>>                        last_J0;
-      std::vector<StressSample<dim>>                             samples;
-      std::vector<double *>                                      targets;
-      std::vector<const materials::Material *>                   material;
+      std::vector<dealii::Tensor<2, dim>>      last_J0;
+      std::vector<StressSample<dim>>           samples;
+      std::vector<double *>                    targets;
+      std::vector<const materials::Material *> material;
       /// Poisson's ratio for the out-of-plane stress of plane strain, or
       /// 0 (plane stress, 3D, or no elastic moduli).
       std::vector<double> out_of_plane_nu;

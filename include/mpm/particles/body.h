@@ -117,7 +117,7 @@ namespace mpm
     dealii::Tensor<2, dim> domain; // column i = half-vector r_i
     /// The sub-cell's vertices (deal.II order), for CPDI2.
     std::array<dealii::Point<dim>, (1u << dim)> corners;
-    double                 traction_area = 0;
+    double                                      traction_area = 0;
   };
 
   /// Build the body mesh (box, ball or file) on every rank.

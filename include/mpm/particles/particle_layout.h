@@ -70,8 +70,7 @@ namespace mpm
     unsigned int
     affine() const
     {
-      return has_affine ? corners() + (has_corners ? n_corner_values : 0) :
-                          0;
+      return has_affine ? corners() + (has_corners ? n_corner_values : 0) : 0;
     }
 
     unsigned int

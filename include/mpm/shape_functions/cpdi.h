@@ -60,7 +60,7 @@ namespace mpm
       /// Gradients of the corner functions M_c at xi in [0,1]^dim.
       template <int dim>
       inline void
-      corner_gradients(const dealii::Point<dim>       &xi,
+      corner_gradients(const dealii::Point<dim>                        &xi,
                        std::array<dealii::Tensor<1, dim>, (1u << dim)> &dM)
       {
         for (unsigned int c = 0; c < (1u << dim); ++c)
@@ -145,7 +145,8 @@ namespace mpm
             }
           const double edges = internal::column_product(J);
           cw.quality =
-            std::min(cw.quality, edges > 0 ? dealii::determinant(J) / edges : 0.);
+            std::min(cw.quality,
+                     edges > 0 ? dealii::determinant(J) / edges : 0.);
         }
       if (!(cw.quality > min_domain_quality))
         return;
@@ -166,9 +167,8 @@ namespace mpm
           const Tensor<2, dim> J   = jacobian(xi); // fills dM at xi
           const double         det = dealii::determinant(J);
           // cofactor = det J^-T: grad_x M dV = cof(J) grad_xi M dxi
-          const Tensor<2, dim> cof =
-            det * dealii::transpose(dealii::invert(J));
-          double M[nc];
+          const Tensor<2, dim> cof = det * dealii::transpose(dealii::invert(J));
+          double               M[nc];
           for (unsigned int c = 0; c < nc; ++c)
             {
               double m = 1;

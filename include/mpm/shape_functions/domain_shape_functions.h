@@ -90,10 +90,10 @@ namespace mpm
        */
       template <typename Particle>
       bool
-      evaluate(const unsigned int  cell,
-               const Particle     &p,
-               Stencil<dim>       &stencil,
-               std::string        &error) const
+      evaluate(const unsigned int cell,
+               const Particle    &p,
+               Stencil<dim>      &stencil,
+               std::string       &error) const
       {
         const Status status = evaluate(cell,
                                        p.get_reference_location(),
@@ -121,9 +121,9 @@ namespace mpm
 
       /// "the domain of particle <id> at (<x>) <what went wrong>".
       std::string
-      message(const Status                  status,
-              const unsigned long long      id,
-              const dealii::Point<dim>     &x) const;
+      message(const Status              status,
+              const unsigned long long  id,
+              const dealii::Point<dim> &x) const;
 
       /// GIMP's reference half-widths of a domain with half-vectors R0
       /// (columns): the bounding box of the parallelogram, scaled to its

@@ -83,8 +83,9 @@ namespace mpm
     struct Stencil
     {
       /// 3^dim cells of 2^dim nodes (GIMP) >= 2^dim corners of 2^dim (CPDI)
-      static constexpr unsigned int capacity =
-        dim == 1 ? 6 : dim == 2 ? 36 : 216;
+      static constexpr unsigned int capacity  = dim == 1 ? 6 :
+                                                dim == 2 ? 36 :
+                                                           216;
       static constexpr unsigned int n_corners = 1u << dim;
 
       unsigned int           n = 0;

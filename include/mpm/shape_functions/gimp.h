@@ -46,9 +46,9 @@ namespace mpm
           if (!(hi > lo))
             return;
           const double s0 = (lo - a) / h, s1 = (hi - a) / h;
-          const double q  = 0.5 * (s1 * s1 - s0 * s0) * h;
-          I[d][0]         = (hi - lo) - q;
-          I[d][1]         = q;
+          const double q       = 0.5 * (s1 * s1 - s0 * s0) * h;
+          I[d][0]              = (hi - lo) - q;
+          I[d][1]              = q;
           const bool lower_end = lo == lower[d], upper_end = hi == upper[d];
           D[d][0] = (upper_end ? 1. - s1 : 0.) - (lower_end ? 1. - s0 : 0.);
           D[d][1] = (upper_end ? s1 : 0.) - (lower_end ? s0 : 0.);

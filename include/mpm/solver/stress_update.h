@@ -41,14 +41,14 @@ namespace mpm
    */
   template <int dim>
   StressUpdateResult
-  update_stress(const BackgroundGrid<dim>               &grid,
-                dealii::Particles::ParticleHandler<dim> &particles,
-                const std::vector<Body<dim>>            &bodies,
-                const NodalVector                       &kinematics,
-                const double                             dt,
-                NodalVector *volume_scratch = nullptr,
-                const shape_functions::DomainShapeFunctions<dim> *domains =
-                  nullptr);
+  update_stress(
+    const BackgroundGrid<dim>                        &grid,
+    dealii::Particles::ParticleHandler<dim>          &particles,
+    const std::vector<Body<dim>>                     &bodies,
+    const NodalVector                                &kinematics,
+    const double                                      dt,
+    NodalVector                                      *volume_scratch = nullptr,
+    const shape_functions::DomainShapeFunctions<dim> *domains        = nullptr);
 
   /// The stability limit of the current state (no update).
   template <int dim>

@@ -3,7 +3,10 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/grid/background_grid.h>
+#include <mpm/particles/particle_layout.h>
 
+#include <cmath>
+#include <sstream>
 #include <string>
 
 namespace mpm::shape_functions
@@ -16,6 +19,44 @@ namespace mpm
 {
   namespace transfer
   {
+    /**
+     * The end of G2P for one particle, given the grid velocity @p v_grid
+     * and its increment @p dv interpolated at it: the new velocity (the
+     * FLIP blend, or APIC's grid velocity) and position
+     * x <- x + dt v_grid. A non-finite result is reported in @p error
+     * (if still empty).
+     */
+    template <int dim, typename Particle>
+    inline void
+    move_particle(Particle     &p,
+                  const double *v_grid,
+                  const double *dv,
+                  const double  flip,
+                  const bool    apic,
+                  const double  dt,
+                  std::string  &error)
+    {
+      using L                 = ParticleLayout<dim>;
+      double            *prop = p.get_properties().data();
+      dealii::Point<dim> x    = p.get_location();
+      bool               ok   = true;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          double &vp = prop[L::velocity + d];
+          vp = apic ? v_grid[d] : flip * (vp + dv[d]) + (1. - flip) * v_grid[d];
+          x[d] += dt * v_grid[d];
+          ok = ok && std::isfinite(vp) && std::isfinite(x[d]);
+        }
+      if (!ok && error.empty())
+        {
+          std::ostringstream s;
+          s << "non-finite velocity or position of particle " << p.get_id()
+            << " near (" << p.get_location() << ")";
+          error = s.str();
+        }
+      p.set_location(x);
+    }
+
     /**
      * Grid to particle: with v_i the nodal velocity at the end of the step
      * and dv_i its increment (KinematicsLayout),

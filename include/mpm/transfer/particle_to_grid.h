@@ -68,15 +68,15 @@ namespace mpm
     template <int dim>
     std::string
     particle_to_grid(
-      const BackgroundGrid<dim>                          &grid,
-      dealii::Particles::ParticleHandler<dim>            &particles,
-      const std::vector<Body<dim>>                       &bodies,
-      const double                                        time,
-      const P2GContent                                    content,
-      NodalVector                                        &nodal,
-      filters::StressFilter<dim>                         *filter  = nullptr,
-      const shape_functions::DomainShapeFunctions<dim>   *domains = nullptr,
-      const unsigned int                                  affine  = 0);
+      const BackgroundGrid<dim>                        &grid,
+      dealii::Particles::ParticleHandler<dim>          &particles,
+      const std::vector<Body<dim>>                     &bodies,
+      const double                                      time,
+      const P2GContent                                  content,
+      NodalVector                                      &nodal,
+      filters::StressFilter<dim>                       *filter  = nullptr,
+      const shape_functions::DomainShapeFunctions<dim> *domains = nullptr,
+      const unsigned int                                affine  = 0);
 
     /**
      * The P2G of the particle-domain families: per particle, the stencil
