@@ -150,8 +150,8 @@ namespace mpm
     AssumedStressProjection<dim>::field(const Point<dim> &xi,
                                         const double     *beta) const
     {
-      unsigned int n[n_voigt], col[n_voigt][5];
-      double       val[n_voigt][5];
+      unsigned int n[n_voigt] = {}, col[n_voigt][5] = {};
+      double       val[n_voigt][5] = {};
       natural_basis(xi, n, col, val);
       double natural[n_voigt];
       for (unsigned int a = 0; a < n_voigt; ++a)
@@ -182,8 +182,8 @@ namespace mpm
       Matrix       H     = Matrix::Zero();
       Vector       R     = Vector::Zero();
       double       total = 0;
-      unsigned int n[n_voigt], col[n_voigt][5];
-      double       val[n_voigt][5];
+      unsigned int n[n_voigt] = {}, col[n_voigt][5] = {};
+      double       val[n_voigt][5] = {};
       for (const auto &p : samples)
         {
           if (!(p.weight > 0))
