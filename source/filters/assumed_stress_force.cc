@@ -89,7 +89,7 @@ namespace mpm
           for (unsigned int d = 0; d < dim; ++d, r /= 3)
             x[d] = 0.5 * (r % 3);
           geo.values_and_gradients(x, N, G);
-          for (unsigned int b = 0; b < n_beta; ++b)
+          for (unsigned int b = 0; b < field.size(); ++b)
             {
               double unit[n_beta]                 = {};
               unit[b]                             = 1;
@@ -123,8 +123,10 @@ namespace mpm
           // the cell's Jacobian, i.e. its extent).
           if (box_operator.empty() || !(geo.extent == box_extent))
             build_box_operator(geo, field);
-          constexpr unsigned int nb = AssumedStressProjection<dim>::n_beta;
-          double                 wb[n_points * nb];
+          // the field's own size: the Pian-Sumihara field leaves the
+          // enriched coefficients out (zero, and without operator terms)
+          const unsigned int nb = field.size();
+          double wb[n_points * AssumedStressProjection<dim>::n_beta];
           for (unsigned int k = 0; k < n_points; ++k)
             for (unsigned int b = 0; b < nb; ++b)
               wb[k * nb + b] = weight[k] * beta[b];
