@@ -5,6 +5,9 @@
 
 #include <Eigen/Dense>
 
+// GCC cannot see that only the entries natural_basis() filled are read.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
 namespace mpm
 {
   namespace filters
@@ -150,8 +153,10 @@ namespace mpm
     AssumedStressProjection<dim>::field(const Point<dim> &xi,
                                         const double     *beta) const
     {
-      unsigned int n[n_voigt] = {}, col[n_voigt][5] = {};
-      double       val[n_voigt][5] = {};
+      // natural_basis() fills the first n[a] entries of each row, the only
+      // ones read (no zero-initialisation in this per-particle path)
+      unsigned int n[n_voigt], col[n_voigt][5];
+      double       val[n_voigt][5];
       natural_basis(xi, n, col, val);
       double natural[n_voigt];
       for (unsigned int a = 0; a < n_voigt; ++a)
@@ -177,13 +182,15 @@ namespace mpm
       std::vector<StressSample<dim>> &samples,
       double                         *beta_out) const
     {
-      using Matrix       = Eigen::Matrix<double, n_beta, n_beta>;
-      using Vector       = Eigen::Matrix<double, n_beta, 1>;
-      Matrix       H     = Matrix::Zero();
-      Vector       R     = Vector::Zero();
-      double       total = 0;
-      unsigned int n[n_voigt] = {}, col[n_voigt][5] = {};
-      double       val[n_voigt][5] = {};
+      using Matrix = Eigen::Matrix<double, n_beta, n_beta>;
+      using Vector = Eigen::Matrix<double, n_beta, 1>;
+      Matrix H     = Matrix::Zero();
+      Vector R     = Vector::Zero();
+      double total = 0;
+      // natural_basis() fills the first n[a] entries of each row, the only
+      // ones read (no zero-initialisation in this per-particle path)
+      unsigned int n[n_voigt], col[n_voigt][5];
+      double       val[n_voigt][5];
       for (const auto &p : samples)
         {
           if (!(p.weight > 0))

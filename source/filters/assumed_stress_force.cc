@@ -100,8 +100,7 @@ namespace mpm
                   for (unsigned int d = 0; d < dim; ++d)
                     if (f[d] != 0.)
                       box_operator.push_back(
-                        {static_cast<unsigned short>(k),
-                         static_cast<unsigned short>(b),
+                        {static_cast<unsigned short>(k * field.size() + b),
                          static_cast<unsigned short>(v * dim + d),
                          f[d]});
                 }
@@ -131,7 +130,7 @@ namespace mpm
             for (unsigned int b = 0; b < nb; ++b)
               wb[k * nb + b] = weight[k] * beta[b];
           for (const Term &t : box_operator)
-            force[t.vd] += t.c * wb[t.k * nb + t.b];
+            force[t.vd] += t.c * wb[t.kb];
           return;
         }
       double         N[n_nodes];

@@ -88,7 +88,8 @@ namespace mpm
       /// The force operator of a box: f[vd] += c W[k] beta[b].
       struct Term
       {
-        unsigned short k, b, vd;
+        unsigned short kb; ///< k * (field size) + b: index into weight x beta
+        unsigned short vd;
         double         c;
       };
       void

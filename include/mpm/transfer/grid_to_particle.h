@@ -27,7 +27,7 @@ namespace mpm
      * (if still empty).
      */
     template <int dim, typename Particle>
-    inline void
+    inline __attribute__((always_inline)) void
     move_particle(Particle     &p,
                   const double *v_grid,
                   const double *dv,
