@@ -94,7 +94,7 @@ namespace mpm
     }
 
     template <int dim>
-    void
+    __attribute__((always_inline)) inline void
     AssumedStressProjection<dim>::natural_basis(const Point<dim> &xi,
                                                 unsigned int (&n)[n_voigt],
                                                 unsigned int (&col)[n_voigt][5],
@@ -149,7 +149,7 @@ namespace mpm
     }
 
     template <int dim>
-    SymmetricTensor<2, dim>
+    __attribute__((always_inline)) inline SymmetricTensor<2, dim>
     AssumedStressProjection<dim>::field(const Point<dim> &xi,
                                         const double     *beta) const
     {
