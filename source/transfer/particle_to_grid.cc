@@ -51,19 +51,16 @@ namespace mpm
                                         filter,
                                         *domains,
                                         affine);
-      using L                              = ParticleLayout<dim>;
-      constexpr unsigned int nv            = shape_functions::n_q1<dim>;
-      const bool             momentum_only = content == P2GContent::momentum;
-      const unsigned int     nc =
-        momentum_only ? dim : P2GLayout<dim>::n_components;
-      const unsigned int off_m   = 0;
-      const unsigned int off_p   = momentum_only ? 0 : 1;
-      const unsigned int off_f   = 1 + dim;
-      const bool         do_mass = content == P2GContent::mass_momentum_force ||
-                           content == P2GContent::mass_momentum;
-      const bool do_momentum = content != P2GContent::force;
-      const bool do_force    = content == P2GContent::mass_momentum_force ||
-                            content == P2GContent::force;
+      using L                   = ParticleLayout<dim>;
+      constexpr unsigned int nv = shape_functions::n_q1<dim>;
+      const P2GPass<dim>     pass(content);
+      const unsigned int     nc          = pass.n_components;
+      const unsigned int     off_m       = 0;
+      const unsigned int     off_p       = pass.momentum_offset;
+      const unsigned int     off_f       = pass.force_offset;
+      const bool             do_mass     = pass.mass;
+      const bool             do_momentum = pass.momentum;
+      const bool             do_force    = pass.force;
 
       std::vector<char> body_loaded(bodies.size());
       for (unsigned int b = 0; b < bodies.size(); ++b)

@@ -23,17 +23,14 @@ namespace mpm
       const shape_functions::DomainShapeFunctions<dim> &domains,
       const unsigned int                                affine)
     {
-      using L                          = ParticleLayout<dim>;
-      const bool         momentum_only = content == P2GContent::momentum;
-      const unsigned int nc =
-        momentum_only ? dim : P2GLayout<dim>::n_components;
-      const unsigned int off_p   = momentum_only ? 0 : 1;
-      const unsigned int off_f   = 1 + dim;
-      const bool         do_mass = content == P2GContent::mass_momentum_force ||
-                           content == P2GContent::mass_momentum;
-      const bool do_momentum = content != P2GContent::force;
-      const bool do_force    = content == P2GContent::mass_momentum_force ||
-                            content == P2GContent::force;
+      using L = ParticleLayout<dim>;
+      const P2GPass<dim> pass(content);
+      const unsigned int nc          = pass.n_components;
+      const unsigned int off_p       = pass.momentum_offset;
+      const unsigned int off_f       = pass.force_offset;
+      const bool         do_mass     = pass.mass;
+      const bool         do_momentum = pass.momentum;
+      const bool         do_force    = pass.force;
       const bool filtering = dim > 1 && do_force && filter && filter->any();
 
       std::vector<char> body_loaded(bodies.size()), present(bodies.size());

@@ -42,6 +42,27 @@ namespace mpm
       static constexpr unsigned int n_components = 1 + 2 * dim;
     };
 
+    /// What a pass of the given content adds, and where in the node's
+    /// values (P2GLayout, or dim momentum components for the re-map).
+    template <int dim>
+    struct P2GPass
+    {
+      explicit P2GPass(const P2GContent content)
+        : mass(content == P2GContent::mass_momentum_force ||
+               content == P2GContent::mass_momentum)
+        , momentum(content != P2GContent::force)
+        , force(content == P2GContent::mass_momentum_force ||
+                content == P2GContent::force)
+        , n_components(content == P2GContent::momentum ?
+                         dim :
+                         P2GLayout<dim>::n_components)
+        , momentum_offset(content == P2GContent::momentum ? 0 : 1)
+      {}
+      const bool                    mass, momentum, force;
+      const unsigned int            n_components, momentum_offset;
+      static constexpr unsigned int force_offset = 1 + dim;
+    };
+
     /**
      * Particle to grid: m_i = sum_p N_ip m_p, (mv)_i = sum_p N_ip m_p v_p,
      * f_i = sum_p [ -V_p sigma_p grad N_ip + N_ip (m_p b_p + A_p t_p) ].
