@@ -558,17 +558,13 @@ namespace mpm
     TimerOutput::Scope t(timer, "MUSL re-map");
     if (!domain_functions) // the domain families re-map in G2P
       {
-        const auto e_p2g = transfer::particle_to_grid(
-          background,
-          particle_handler,
-          bodies,
-          current_time,
-          transfer::P2GContent::momentum,
-          remap,
-          static_cast<filters::StressFilter<dim> *>(nullptr),
-          static_cast<const shape_functions::DomainShapeFunctions<dim> *>(
-            nullptr),
-          layout.affine());
+        const auto e_p2g =
+          transfer::particle_to_grid(background,
+                                     particle_handler,
+                                     bodies,
+                                     current_time,
+                                     transfer::P2GContent::momentum,
+                                     remap);
         if (local_error.empty())
           local_error = e_p2g;
       }

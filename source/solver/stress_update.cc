@@ -4,6 +4,7 @@
 #include <mpm/particles/particle_layout.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/solver/stress_update.h>
+#include <mpm/transfer/velocity_gradient.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,27 +19,8 @@ namespace mpm
     /// Nodal sums of the node-smoothed particles: m, m J, m tr L.
     constexpr unsigned int n_volume_components = 3;
 
-    /// L_p from the nodal velocities of the particle's cell.
-    template <int dim>
-    inline Tensor<2, dim>
-    velocity_gradient(const double         *in,
-                      const unsigned int   *nodes,
-                      const Tensor<1, dim> *G)
-    {
-      using K = KinematicsLayout<dim>;
-      Tensor<2, dim> grad_v;
-      for (unsigned int v = 0; v < shape_functions::n_q1<dim>; ++v)
-        {
-          const double *k = in + nodes[v] * K::n_components;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              grad_v[i][j] += k[K::velocity + i] * G[v][j];
-        }
-      return grad_v;
-    }
-
-    /// L_p and the deformation gradient at the end of the step,
-    /// F = (I + dt L) F_old, of the particle with properties @p prop.
+    /// The step's kinematics of the particle with properties @p prop:
+    /// L_p = @p grad_v and F = (I + dt L) F_old.
     template <int dim>
     struct StepKinematics
     {
@@ -47,15 +29,12 @@ namespace mpm
 
     template <int dim>
     inline StepKinematics<dim>
-    step_kinematics(const double         *in,
-                    const unsigned int   *nodes,
-                    const Tensor<1, dim> *G,
+    step_kinematics(const Tensor<2, dim> &grad_v,
                     const double         *prop,
                     const double          dt)
     {
-      using L                     = ParticleLayout<dim>;
-      const Tensor<2, dim> grad_v = velocity_gradient<dim>(in, nodes, G);
-      const Tensor<2, dim> F_old  = load_matrix<dim>(prop + L::F);
+      using L                    = ParticleLayout<dim>;
+      const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
       return {grad_v, F_old + dt * grad_v * F_old};
     }
 
@@ -111,23 +90,19 @@ namespace mpm
       if (!domains)
         {
           geo.values_and_gradients(p.get_reference_location(), N, G);
-          k = step_kinematics<dim>(in, nodes, G, prop, dt);
+          k =
+            step_kinematics<dim>(transfer::velocity_gradient<dim>(in, nodes, G),
+                                 prop,
+                                 dt);
           return true;
         }
-      geo.values(p.get_reference_location(), N);
+      if (any_node) // the node average's Q1 values
+        geo.values(p.get_reference_location(), N);
       if (!domains->evaluate(cell_index, p, stencil, result.error))
         return false;
-      using K  = KinematicsLayout<dim>;
-      k.grad_v = Tensor<2, dim>();
-      for (unsigned int e = 0; e < stencil.n; ++e)
-        {
-          const double *node = in + stencil.node[e] * K::n_components;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              k.grad_v[i][j] += node[K::velocity + i] * stencil.gradient[e][j];
-        }
-      const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
-      k.F = F_old + dt * k.grad_v * F_old;
+      k = step_kinematics<dim>(transfer::velocity_gradient<dim>(in, stencil),
+                               prop,
+                               dt);
       return true;
     };
 

@@ -25,36 +25,20 @@ namespace mpm
       if (domains)
         return grid_to_particle_domains(
           grid, particles, kinematics, dt, flip, *domains, nullptr, affine);
-      using L                   = ParticleLayout<dim>;
+      // APIC needs a domain family (refused at set-up otherwise)
+      Assert(affine == 0, ExcInternalError());
       using K                   = KinematicsLayout<dim>;
       constexpr unsigned int nv = shape_functions::n_q1<dim>;
       const double          *in = kinematics.begin();
       std::string            error;
       double                 N[nv];
-      Tensor<1, dim>         G[nv];
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
           const unsigned int *nodes = grid.nodes(cell);
-          const auto         &geo   = grid.geometry(cell);
           for (auto &p : pic)
             {
-              if (affine)
-                {
-                  // APIC: C_p = sum_i v_i (x) grad N_ip
-                  geo.values_and_gradients(p.get_reference_location(), N, G);
-                  Tensor<2, dim> C;
-                  for (unsigned int v = 0; v < nv; ++v)
-                    {
-                      const double *k = in + nodes[v] * K::n_components;
-                      for (unsigned int i = 0; i < dim; ++i)
-                        for (unsigned int j = 0; j < dim; ++j)
-                          C[i][j] += k[K::velocity + i] * G[v][j];
-                    }
-                  store_matrix<dim>(C, p.get_properties().data() + affine);
-                }
-              else
-                shape_functions::Q1Cell<dim>::values(p.get_reference_location(),
-                                                     N);
+              shape_functions::Q1Cell<dim>::values(p.get_reference_location(),
+                                                   N);
               double v_grid[dim] = {}, dv[dim] = {};
               for (unsigned int v = 0; v < nv; ++v)
                 {
@@ -65,7 +49,7 @@ namespace mpm
                       dv[d] += N[v] * k[K::increment + d];
                     }
                 }
-              move_particle<dim>(p, v_grid, dv, flip, affine != 0, dt, error);
+              move_particle<dim>(p, v_grid, dv, flip, false, dt, error);
             }
         });
       return error;

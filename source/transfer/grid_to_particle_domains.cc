@@ -3,6 +3,7 @@
 #include <mpm/particles/particle_layout.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/transfer/grid_to_particle.h>
+#include <mpm/transfer/velocity_gradient.h>
 
 #include <cmath>
 #include <sstream>
@@ -44,8 +45,7 @@ namespace mpm
               double *prop = p.get_properties().data();
               if (!domains.evaluate(index, p, st, error))
                 continue;
-              double         v_grid[dim] = {}, dv[dim] = {};
-              Tensor<2, dim> C; // APIC: sum_i v_i (x) grad S_ip
+              double v_grid[dim] = {}, dv[dim] = {};
               for (unsigned int k = 0; k < st.n; ++k)
                 {
                   const double *node = in + st.node[k] * K::n_components;
@@ -54,22 +54,20 @@ namespace mpm
                       v_grid[d] += st.value[k] * node[K::velocity + d];
                       dv[d] += st.value[k] * node[K::increment + d];
                     }
-                  if (affine)
-                    for (unsigned int i = 0; i < dim; ++i)
-                      for (unsigned int j = 0; j < dim; ++j)
-                        C[i][j] += node[K::velocity + i] * st.gradient[k][j];
                 }
+              Tensor<2, dim> C; // APIC: sum_i v_i (x) grad S_ip
               if (affine)
-                store_matrix<dim>(C, prop + affine);
+                {
+                  C = velocity_gradient<dim>(in, st);
+                  store_matrix<dim>(C, prop + affine);
+                }
               move_particle<dim>(p, v_grid, dv, flip, affine != 0, dt, error);
               // MUSL: the new particle momentum back to the nodes, with
               // the same weights
               if (momentum)
                 {
-                  Point<dim> x_c; // the domain centroid (see P2G)
-                  if (affine)
-                    for (unsigned int k = 0; k < st.n; ++k)
-                      x_c += st.value[k] * grid.node_position(st.node[k]);
+                  const Point<dim> x_c =
+                    affine ? stencil_centroid(st, grid) : Point<dim>();
                   for (unsigned int k = 0; k < st.n; ++k)
                     {
                       Tensor<1, dim> v;

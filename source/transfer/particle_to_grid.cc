@@ -51,6 +51,8 @@ namespace mpm
                                         filter,
                                         *domains,
                                         affine);
+      // APIC needs a domain family (refused at set-up otherwise)
+      Assert(affine == 0, ExcInternalError());
       using L                   = ParticleLayout<dim>;
       constexpr unsigned int nv = shape_functions::n_q1<dim>;
       const P2GPass<dim>     pass(content);
@@ -182,18 +184,6 @@ namespace mpm
                   for (unsigned int d = 0; d < dim; ++d)
                     local[v][1 + d] += w * prop[L::velocity + d];
                 }
-            if (do_momentum && affine)
-              {
-                // APIC: + m_p C_p (x_i - x_p), x_p where N was evaluated
-                const Tensor<2, dim> C   = load_matrix<dim>(prop + affine);
-                const Point<dim>     x_p = geo.map(xi);
-                for (unsigned int v = 0; v < nv; ++v)
-                  {
-                    const Tensor<1, dim> c = C * (geo.vertices[v] - x_p);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      local[v][1 + d] += N[v] * m * c[d];
-                  }
-              }
           }
 
         // Filtered bodies: project their stresses in this cell, then

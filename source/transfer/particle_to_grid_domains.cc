@@ -3,6 +3,7 @@
 #include <mpm/particles/particle_layout.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/transfer/particle_to_grid.h>
+#include <mpm/transfer/velocity_gradient.h>
 
 namespace mpm
 {
@@ -94,9 +95,8 @@ namespace mpm
                   // about the domain's centroid sum_i S_ip x_i, so that
                   // sum_i S_ip C (x_i - x_p) = 0 and momentum is kept
                   // (CPDI2's centroid is not its particle position)
-                  C = load_matrix<dim>(prop + affine);
-                  for (unsigned int k = 0; k < st.n; ++k)
-                    x_p += st.value[k] * grid.node_position(st.node[k]);
+                  C   = load_matrix<dim>(prop + affine);
+                  x_p = stencil_centroid(st, grid);
                 }
               for (unsigned int k = 0; k < st.n; ++k)
                 {

@@ -69,9 +69,9 @@ namespace mpm
      * With @p domains, N_ip are the family's domain averages
      * (grid_to_particle_domains()).
      *
-     * @p affine: APIC's slot of C_p (0: no APIC). APIC sets
-     * v_p <- sum_i N_ip v_i and C_p <- sum_i v_i (x) grad N_ip (the
-     * flip fraction is not used).
+     * @p affine: APIC's slot of C_p (0: no APIC; APIC needs @p domains).
+     * APIC sets v_p <- sum_i S_ip v_i and C_p <- sum_i v_i (x) grad S_ip
+     * (the flip fraction is not used).
      */
     template <int dim>
     std::string

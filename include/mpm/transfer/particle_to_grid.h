@@ -83,8 +83,8 @@ namespace mpm
      * string, or what went wrong with the first bad particle domain.
      *
      * @p affine: APIC's slot of C_p in the particle properties (0: no
-     * APIC); the momentum sent to node i is then
-     * N_ip m_p (v_p + C_p (x_i - x_p)).
+     * APIC; APIC needs @p domains); the momentum sent to node i is then
+     * S_ip m_p (v_p + C_p (x_i - x_c)), x_c the domain's centroid.
      */
     template <int dim>
     std::string
