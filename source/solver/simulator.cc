@@ -538,15 +538,11 @@ namespace mpm
                                            *domain_functions,
                                            fused_remap ? &remap : nullptr,
                                            layout.affine()) :
-        transfer::grid_to_particle(
-          background,
-          particle_handler,
-          kinematics,
-          dt,
-          params.time.flip_fraction,
-          static_cast<const shape_functions::DomainShapeFunctions<dim> *>(
-            nullptr),
-          layout.affine());
+        transfer::grid_to_particle(background,
+                                   particle_handler,
+                                   kinematics,
+                                   dt,
+                                   params.time.flip_fraction);
     if (local_error.empty())
       local_error = e;
   }

@@ -18,15 +18,8 @@ namespace mpm
                      Particles::ParticleHandler<dim> &particles,
                      const NodalVector               &kinematics,
                      const double                     dt,
-                     const double                     flip,
-                     const shape_functions::DomainShapeFunctions<dim> *domains,
-                     const unsigned int                                affine)
+                     const double                     flip)
     {
-      if (domains)
-        return grid_to_particle_domains(
-          grid, particles, kinematics, dt, flip, *domains, nullptr, affine);
-      // APIC needs a domain family (refused at set-up otherwise)
-      Assert(affine == 0, ExcInternalError());
       using K                   = KinematicsLayout<dim>;
       constexpr unsigned int nv = shape_functions::n_q1<dim>;
       const double          *in = kinematics.begin();
@@ -60,24 +53,18 @@ namespace mpm
                         Particles::ParticleHandler<1> &,
                         const NodalVector &,
                         double,
-                        double,
-                        const shape_functions::DomainShapeFunctions<1> *,
-                        unsigned int);
+                        double);
     template std::string
     grid_to_particle<2>(const BackgroundGrid<2> &,
                         Particles::ParticleHandler<2> &,
                         const NodalVector &,
                         double,
-                        double,
-                        const shape_functions::DomainShapeFunctions<2> *,
-                        unsigned int);
+                        double);
     template std::string
     grid_to_particle<3>(const BackgroundGrid<3> &,
                         Particles::ParticleHandler<3> &,
                         const NodalVector &,
                         double,
-                        double,
-                        const shape_functions::DomainShapeFunctions<3> *,
-                        unsigned int);
+                        double);
   } // namespace transfer
 } // namespace mpm

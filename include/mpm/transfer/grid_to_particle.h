@@ -66,29 +66,25 @@ namespace mpm
      * location until they are sorted again. Returns an empty string or a
      * description of the first particle with a non-finite value.
      *
-     * With @p domains, N_ip are the family's domain averages
-     * (grid_to_particle_domains()).
-     *
-     * @p affine: APIC's slot of C_p (0: no APIC; APIC needs @p domains).
-     * APIC sets v_p <- sum_i S_ip v_i and C_p <- sum_i v_i (x) grad S_ip
-     * (the flip fraction is not used).
+     * Standard MPM; the particle-domain families use
+     * grid_to_particle_domains().
      */
     template <int dim>
     std::string
-    grid_to_particle(
-      const BackgroundGrid<dim>                        &grid,
-      dealii::Particles::ParticleHandler<dim>          &particles,
-      const NodalVector                                &kinematics,
-      const double                                      dt,
-      const double                                      flip_fraction,
-      const shape_functions::DomainShapeFunctions<dim> *domains = nullptr,
-      const unsigned int                                affine  = 0);
+    grid_to_particle(const BackgroundGrid<dim>               &grid,
+                     dealii::Particles::ParticleHandler<dim> &particles,
+                     const NodalVector                       &kinematics,
+                     const double                             dt,
+                     const double                             flip_fraction);
 
     /**
-     * G2P of the particle-domain families. With @p remap (MUSL), each
-     * particle's new momentum goes back to the nodes in the same pass
-     * (dim components per node, compressed at the end): the re-map
-     * reuses the stencil instead of evaluating the domain again.
+     * G2P of the particle-domain families. @p affine: APIC's slot of C_p
+     * (0: no APIC); APIC sets v_p <- sum_i S_ip v_i and
+     * C_p <- sum_i v_i (x) grad S_ip (the flip fraction is not used).
+     * With @p remap (MUSL), each particle's new momentum goes back to the
+     * nodes in the same pass (dim components per node, compressed at the
+     * end): the re-map reuses the stencil instead of evaluating the domain
+     * again.
      */
     template <int dim>
     std::string
