@@ -284,7 +284,6 @@ namespace mpm
               s.node[k]            = nodes[v];
               s.value[k]           = cw.w[c] * N[v];
               s.gradient[k]        = N[v] * cw.g[c];
-              s.corner_value[k]    = N[v];
             }
         }
       return Status::ok;

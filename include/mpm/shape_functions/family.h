@@ -73,26 +73,22 @@ namespace mpm
      * The weights of one particle: S_ip and grad S_ip for the nodes i it
      * reaches, as a list that may name a node more than once (a node
      * shared by two cells the domain overlaps); sums over the list are
-     * what the transfers need, so merging would only cost time.
-     *
-     * For the corner-based families (CPDI, CPDI2) entry k belongs to
-     * corner k / 2^dim and @p corner_value keeps the Q1 value of node
-     * entry k at that corner (CPDI2 moves its corners with it).
+     * what the transfers need, so merging would only cost time. For the
+     * corner-based families (CPDI, CPDI2) entry k belongs to corner
+     * k / 2^dim.
      */
     template <int dim>
     struct Stencil
     {
       /// 3^dim cells of 2^dim nodes (GIMP) >= 2^dim corners of 2^dim (CPDI)
-      static constexpr unsigned int capacity  = dim == 1 ? 6 :
-                                                dim == 2 ? 36 :
-                                                           216;
-      static constexpr unsigned int n_corners = 1u << dim;
+      static constexpr unsigned int capacity = dim == 1 ? 6 :
+                                               dim == 2 ? 36 :
+                                                          216;
 
       unsigned int           n = 0;
       unsigned int           node[capacity];
       double                 value[capacity];
       dealii::Tensor<1, dim> gradient[capacity];
-      double                 corner_value[n_corners << dim];
     };
   } // namespace shape_functions
 } // namespace mpm
