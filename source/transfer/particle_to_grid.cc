@@ -191,7 +191,9 @@ namespace mpm
         if constexpr (has_filter && with_filter)
           for (const unsigned int b : force_bodies)
             {
-              double     beta[21]; // n_beta of 3D, the largest
+              double
+                beta[filters::AssumedStressProjection<3>::n_beta]; // the
+                                                                   // largest
               double     f[nv * dim] = {};
               const auto result      = filter->filter_cell(J0, pic, b, beta);
               if (result != filters::StressFilter<dim>::Result::unchanged)

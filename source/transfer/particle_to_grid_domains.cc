@@ -59,7 +59,7 @@ namespace mpm
                   present[static_cast<unsigned int>(
                     p.get_properties()[L::body])] = 1;
                 const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
-                double               beta[21]; // n_beta of 3D, the largest
+                double               beta[filters::StressFilter<dim>::n_beta];
                 for (unsigned int b = 0; b < bodies.size(); ++b)
                   if (present[b] && filter->filtered(b))
                     filter->filter_cell(J0, pic, b, beta);
