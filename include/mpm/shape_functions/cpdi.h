@@ -3,6 +3,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <mpm/shape_functions/q1_cell.h>
+
 #include <array>
 #include <cmath>
 
@@ -56,23 +58,6 @@ namespace mpm
           }
         return p;
       }
-
-      /// Gradients of the corner functions M_c at xi in [0,1]^dim.
-      template <int dim>
-      inline void
-      corner_gradients(const dealii::Point<dim>                        &xi,
-                       std::array<dealii::Tensor<1, dim>, (1u << dim)> &dM)
-      {
-        for (unsigned int c = 0; c < (1u << dim); ++c)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              double g = ((c >> d) & 1) ? 1. : -1.;
-              for (unsigned int e = 0; e < dim; ++e)
-                if (e != d)
-                  g *= ((c >> e) & 1) ? xi[e] : 1. - xi[e];
-              dM[c][d] = g;
-            }
-      }
     } // namespace internal
 
     /**
@@ -118,10 +103,11 @@ namespace mpm
       constexpr unsigned int nc = CornerWeights<dim>::n_corners;
       using dealii::Point;
       using dealii::Tensor;
-      std::array<Tensor<1, dim>, nc> dM;
-
-      auto jacobian = [&](const Point<dim> &xi) {
-        internal::corner_gradients<dim>(xi, dM);
+      // The corner functions M_c are the Q1 functions of the domain's
+      // reference cube (same vertex order).
+      Tensor<1, dim> dM[nc];
+      auto           jacobian = [&](const Point<dim> &xi) {
+        Q1Cell<dim>::reference_gradients(xi, dM);
         Tensor<2, dim> J;
         for (unsigned int c = 0; c < nc; ++c)
           for (unsigned int i = 0; i < dim; ++i)
@@ -169,13 +155,7 @@ namespace mpm
           // cofactor = det J^-T: grad_x M dV = cof(J) grad_xi M dxi
           const Tensor<2, dim> cof = det * dealii::transpose(dealii::invert(J));
           double               M[nc];
-          for (unsigned int c = 0; c < nc; ++c)
-            {
-              double m = 1;
-              for (unsigned int d = 0; d < dim; ++d)
-                m *= ((c >> d) & 1) ? xi[d] : 1. - xi[d];
-              M[c] = m;
-            }
+          Q1Cell<dim>::values(xi, M);
           cw.volume += weight * det;
           for (unsigned int c = 0; c < nc; ++c)
             {
