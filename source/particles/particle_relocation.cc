@@ -33,15 +33,8 @@ namespace mpm
     {
       for (unsigned int hop = 0; hop < 2 * dim; ++hop)
         {
-          unsigned int face  = numbers::invalid_unsigned_int;
-          double       worst = 0;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              if (-xi[d] > worst)
-                worst = -xi[d], face = 2 * d;
-              if (xi[d] - 1 > worst)
-                worst = xi[d] - 1, face = 2 * d + 1;
-            }
+          const unsigned int face =
+            shape_functions::Q1Cell<dim>::most_violated_face(xi);
           if (face == numbers::invalid_unsigned_int)
             return false;
           if (cell->at_boundary(face))

@@ -90,15 +90,9 @@ namespace mpm
               found = cell;
               return Status::ok;
             }
-          unsigned int face  = 0;
-          double       worst = -1;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              if (-xi[d] > worst)
-                worst = -xi[d], face = 2 * d;
-              if (xi[d] - 1 > worst)
-                worst = xi[d] - 1, face = 2 * d + 1;
-            }
+          const unsigned int face = Q1Cell<dim>::most_violated_face(xi);
+          if (face == numbers::invalid_unsigned_int) // xi not a number
+            return Status::lost_corner;
           const unsigned int next = grid.face_neighbor(cell, face);
           if (next == Grid::outside_grid)
             {

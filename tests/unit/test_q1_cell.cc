@@ -120,10 +120,10 @@ BOOST_AUTO_TEST_CASE(distorted_cells)
 
 BOOST_AUTO_TEST_CASE(parallelogram)
 {
-  std::array<Point<2>, 4> v = {Point<2>(0, 0),
-                               Point<2>(1, 0.2),
-                               Point<2>(0.5, 1),
-                               Point<2>(1.5, 1.2)};
+  std::array<Point<2>, 4> v = {{Point<2>(0, 0),
+                                Point<2>(1, 0.2),
+                                Point<2>(0.5, 1),
+                                Point<2>(1.5, 1.2)}};
   Q1Cell<2>               c;
   c.reinit(v, 1e-12);
   BOOST_TEST(!c.is_box);

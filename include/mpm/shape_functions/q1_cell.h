@@ -2,6 +2,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
 
 #include <array>
 #include <cmath>
@@ -166,6 +167,26 @@ namespace mpm
           if (!(xi[d] >= -1e-12 && xi[d] <= 1. + 1e-12))
             return false;
         return true;
+      }
+
+      /**
+       * The face (deal.II numbering, 2 d + side) across which xi lies
+       * furthest outside [0,1]^dim, or numbers::invalid_unsigned_int if
+       * it lies inside: where a walk towards the point goes next.
+       */
+      static unsigned int
+      most_violated_face(const Point<dim> &xi)
+      {
+        unsigned int face  = dealii::numbers::invalid_unsigned_int;
+        double       worst = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (-xi[d] > worst)
+              worst = -xi[d], face = 2 * d;
+            if (xi[d] - 1 > worst)
+              worst = xi[d] - 1, face = 2 * d + 1;
+          }
+        return face;
       }
 
       /// Position of the reference point xi.
