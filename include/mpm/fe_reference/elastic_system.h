@@ -1,0 +1,128 @@
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <mpm/fe_reference/lame_moduli.h>
+#include <mpm/fe_reference/parameters.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  namespace fe_reference
+  {
+    /**
+     * Small-strain linear elasticity on one mesh: the Q_p displacement
+     * formulation or the Taylor-Hood Q_p/Q_(p-1) displacement-pressure
+     * formulation (doc/theory.md, "The FE reference solver"), the
+     * boundary conditions of the parameter file as constraints, the
+     * stiffness matrix, load vector and, for modal analysis, the
+     * consistent mass matrix. Serial; solved with UMFPACK.
+     */
+    template <int dim>
+    class ElasticSystem
+    {
+    public:
+      /// The triangulation must outlive this object.
+      ElasticSystem(const AllParameters<dim>         &parameters,
+                    const dealii::Triangulation<dim> &tria);
+
+      /// Distribute dofs, build constraints and the sparsity pattern.
+      void
+      setup();
+
+      /// Assemble K and f (with the inhomogeneous constraints), solve
+      /// K u = f directly.
+      void
+      solve_static();
+
+      /**
+       * Assemble K and the consistent mass matrix M. Rows and columns of
+       * constrained dofs are decoupled; their M diagonal is zero, so they
+       * belong to infinite eigenvalues and never show up in the lowest
+       * modes.
+       */
+      void
+      assemble_stiffness_and_mass();
+
+      /// Displacement (and pressure) at a point; InputError outside the body.
+      dealii::Vector<double>
+      point_value(const dealii::Point<dim> &p) const;
+
+      /// The in-plane Cauchy stress at every quadrature point of every cell.
+      std::vector<dealii::SymmetricTensor<2, dim>>
+      quadrature_point_stresses() const;
+
+      /// ParaView file of fields of this system's dof layout.
+      void
+      write_vtu(const std::string                                 &file_name,
+                const std::vector<const dealii::Vector<double> *> &fields,
+                const std::vector<std::string>                    &names) const;
+
+      bool
+      mixed() const
+      {
+        return is_mixed;
+      }
+
+      const dealii::DoFHandler<dim> &
+      dof_handler() const
+      {
+        return dofs;
+      }
+
+      const dealii::AffineConstraints<double> &
+      constraints() const
+      {
+        return affine_constraints;
+      }
+
+      const dealii::Vector<double> &
+      solution() const
+      {
+        return displacement;
+      }
+
+      const dealii::SparseMatrix<double> &
+      stiffness_matrix() const
+      {
+        return stiffness;
+      }
+
+      const dealii::SparseMatrix<double> &
+      mass_matrix() const
+      {
+        return mass;
+      }
+
+      /// Whether a clamped or prescribed boundary removes the rigid modes.
+      bool
+      has_dirichlet_boundary() const;
+
+    private:
+      void
+      assemble(const bool with_mass);
+
+      const AllParameters<dim>              &parameters;
+      const bool                             is_mixed;
+      const LameModuli                       moduli;
+      std::unique_ptr<dealii::FESystem<dim>> fe;
+      dealii::MappingQ<dim>                  mapping;
+      dealii::DoFHandler<dim>                dofs;
+      dealii::AffineConstraints<double>      affine_constraints;
+      dealii::SparsityPattern                sparsity;
+      dealii::SparseMatrix<double>           stiffness, mass;
+      dealii::Vector<double>                 load, displacement;
+    };
+  } // namespace fe_reference
+} // namespace mpm

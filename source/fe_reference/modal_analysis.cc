@@ -1,0 +1,125 @@
+#include <deal.II/lac/arpack_solver.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <mpm/fe_reference/modal_analysis.h>
+#include <mpm/utilities/input_error.h>
+
+#include <algorithm>
+#include <complex>
+#include <numeric>
+
+namespace mpm
+{
+  namespace fe_reference
+  {
+    using namespace dealii;
+
+    template <int dim>
+    Modes
+    compute_modes(const ElasticSystem<dim> &system, const unsigned int n_modes)
+    {
+      const SparseMatrix<double> &K = system.stiffness_matrix();
+      const SparseMatrix<double> &M = system.mass_matrix();
+      const unsigned int          n = K.m();
+
+      double largest_ratio = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        if (M.diag_element(i) > 0)
+          largest_ratio =
+            std::max(largest_ratio, K.diag_element(i) / M.diag_element(i));
+      const bool   free_body       = !system.has_dirichlet_boundary();
+      const double rigid_threshold = 1e-9 * largest_ratio;
+      const double shift           = free_body ? -rigid_threshold : 0.;
+      // at most 3 (2D) or 6 (3D) rigid-body modes come first
+      const unsigned int n_wanted =
+        n_modes + (free_body ? dim * (dim + 1) / 2 : 0);
+      const unsigned int n_lanczos = std::max(2 * n_wanted + 2, 30u);
+      unsigned int       n_free    = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        n_free += system.constraints().is_constrained(i) ? 0 : 1;
+      if (n_lanczos + 1 > n_free)
+        throw InputError(
+          "Analysis/Number of modes = " + std::to_string(n_modes) +
+          ": the coarsest mesh has " + std::to_string(n_free) +
+          " free dofs, too few for the Lanczos iteration; "
+          "refine the coarse mesh");
+
+      SparseMatrix<double> shifted(K.get_sparsity_pattern());
+      shifted.copy_from(K);
+      if (shift != 0)
+        shifted.add(-shift, M);
+      SparseDirectUMFPACK inverse;
+      try
+        {
+          inverse.initialize(shifted);
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError("modal analysis: K - sigma M is singular (" +
+                           clean_dealii_message(e.what()) + ")");
+        }
+
+      SolverControl control(5000, 1e-11);
+      ArpackSolver  eigensolver(
+        control,
+        ArpackSolver::AdditionalData(n_lanczos,
+                                     ArpackSolver::largest_magnitude,
+                                     /*symmetric=*/true));
+      eigensolver.set_shift(shift);
+      std::vector<std::complex<double>> eigenvalues(n_wanted);
+      std::vector<Vector<double>>       vectors(n_wanted, Vector<double>(n));
+      eigensolver.solve(K, M, inverse, eigenvalues, vectors, n_wanted);
+
+      std::vector<unsigned int> order(n_wanted);
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+        return eigenvalues[a].real() < eigenvalues[b].real();
+      });
+
+      Modes          modes;
+      Vector<double> Ku(n), Mu(n);
+      for (const unsigned int k : order)
+        {
+          const double lambda = eigenvalues[k].real();
+          // ARPACK reports failures only through assertions (debug mode):
+          // check every pair here
+          K.vmult(Ku, vectors[k]);
+          M.vmult(Mu, vectors[k]);
+          Vector<double> residual(Ku);
+          residual.add(-lambda, Mu);
+          const double scale = std::max(Ku.l2_norm(), 1e-300);
+          if (!(residual.l2_norm() <= 1e-6 * scale) &&
+              !(free_body && std::abs(lambda) < rigid_threshold))
+            throw RuntimeError("in the modal analysis: ARPACK returned an "
+                               "eigenpair with relative residual " +
+                               std::to_string(residual.l2_norm() / scale));
+          if (std::abs(lambda) < rigid_threshold)
+            {
+              ++modes.n_rigid_body_modes;
+              continue;
+            }
+          if (modes.omega_squared.size() == n_modes)
+            continue;
+          Vector<double> shape = vectors[k];
+          system.constraints().distribute(shape);
+          shape /= std::max(shape.linfty_norm(), 1e-300);
+          modes.omega_squared.push_back(lambda);
+          modes.shapes.push_back(shape);
+        }
+      if (modes.omega_squared.size() < n_modes)
+        throw RuntimeError("in the modal analysis: only " +
+                           std::to_string(modes.omega_squared.size()) +
+                           " elastic modes found among the lowest " +
+                           std::to_string(n_wanted) + " (" +
+                           std::to_string(modes.n_rigid_body_modes) +
+                           " rigid-body modes)");
+      return modes;
+    }
+
+    template Modes
+    compute_modes(const ElasticSystem<2> &, const unsigned int);
+    template Modes
+    compute_modes(const ElasticSystem<3> &, const unsigned int);
+  } // namespace fe_reference
+} // namespace mpm
