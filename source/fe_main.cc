@@ -47,7 +47,16 @@ namespace
         throw mpm::InputError("Error in the parameter file '" + file +
                               "':\n    " + e.what());
       }
-    mpm::fe_reference::run_refinement_study(parameters, std::cout);
+    try
+      {
+        mpm::fe_reference::run_refinement_study(parameters, std::cout);
+      }
+    catch (const mpm::InputError &e)
+      {
+        // found while solving (a point outside the body, a free body)
+        throw mpm::InputError("Error in the parameter file '" + file +
+                              "':\n    " + e.what());
+      }
   }
 
   template <int dim>

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -13,6 +14,7 @@
 #include <mpm/utilities/input_error.h>
 
 #include <fstream>
+#include <limits>
 #include <set>
 
 namespace mpm
@@ -58,6 +60,37 @@ namespace mpm
 
       private:
         const Expression<dim> &u;
+      };
+
+      /// Rigid-body motion k: translations along x, y(, z), then rotations
+      /// about z (2D), or about x, y, z (3D); zero pressure.
+      template <int dim>
+      class RigidMotion : public Function<dim>
+      {
+      public:
+        RigidMotion(const unsigned int k, const unsigned int n_components)
+          : Function<dim>(n_components)
+          , k(k)
+        {}
+
+        double
+        value(const Point<dim> &x, const unsigned int c) const override
+        {
+          if (c >= dim)
+            return 0;
+          if (k < dim)
+            return c == k ? 1. : 0.;
+          // rotation about axis a: e_a x x
+          const unsigned int a = dim == 2 ? 2 : k - dim;
+          Tensor<1, 3>       x3, axis;
+          for (unsigned int d = 0; d < dim; ++d)
+            x3[d] = x[d];
+          axis[a] = 1;
+          return cross_product_3d(axis, x3)[c];
+        }
+
+      private:
+        const unsigned int k;
       };
 
       template <int dim>
@@ -278,9 +311,51 @@ namespace mpm
     }
 
     template <int dim>
+    bool
+    ElasticSystem<dim>::leaves_rigid_body_motion() const
+    {
+      if (has_dirichlet_boundary())
+        return false;
+      // The constraints (slip, hanging nodes) are homogeneous here: a rigid
+      // motion r is admissible if distribute() does not change it. The
+      // admissible combinations are the null space of the violations
+      // V = [r_k - distribute(r_k)]; test the Gram matrix V^T V.
+      const unsigned int          n_rigid = dim * (dim + 1) / 2;
+      std::vector<Vector<double>> violation;
+      for (unsigned int k = 0; k < n_rigid; ++k)
+        {
+          Vector<double> r(dofs.n_dofs());
+          VectorTools::interpolate(mapping,
+                                   dofs,
+                                   RigidMotion<dim>(k, fe->n_components()),
+                                   r);
+          r /= r.l2_norm();
+          Vector<double> v(r);
+          affine_constraints.distribute(v);
+          v -= r;
+          violation.push_back(v);
+        }
+      LAPACKFullMatrix<double> gram(n_rigid, n_rigid);
+      for (unsigned int k = 0; k < n_rigid; ++k)
+        for (unsigned int l = 0; l < n_rigid; ++l)
+          gram(k, l) = violation[k] * violation[l];
+      gram.compute_eigenvalues();
+      double smallest = std::numeric_limits<double>::max();
+      for (unsigned int k = 0; k < n_rigid; ++k)
+        smallest = std::min(smallest, std::abs(gram.eigenvalue(k)));
+      return smallest < 1e-12;
+    }
+
+    template <int dim>
     void
     ElasticSystem<dim>::solve_static()
     {
+      if (leaves_rigid_body_motion())
+        throw InputError(
+          "Boundary conditions: the clamped, slip and prescribed boundaries "
+          "leave a rigid-body motion free, so the static problem has no "
+          "unique solution (clamp a boundary, or add slip boundaries that "
+          "hold every translation and rotation)");
       assemble(false);
       SparseDirectUMFPACK direct;
       try

@@ -109,6 +109,11 @@ namespace mpm
       bool
       has_dirichlet_boundary() const;
 
+      /// Whether a rigid-body motion satisfies every constraint (then K is
+      /// singular and statics has no unique solution).
+      bool
+      leaves_rigid_body_motion() const;
+
     private:
       void
       assemble(const bool with_mass);
