@@ -153,10 +153,16 @@ namespace mpm
            {&bc.clamped, &bc.slip, &bc.prescribed, &bc.traction_ids})
         for (const auto id : *list)
           if (mesh_ids.count(id) == 0)
-            throw InputError("Boundary conditions: boundary id " +
-                             std::to_string(id) +
-                             " does not occur on the mesh (see Geometry/Type "
-                             "for the ids)");
+            {
+              std::string present;
+              for (const auto m : mesh_ids)
+                present += (present.empty() ? "" : ", ") + std::to_string(m);
+              throw InputError("Boundary conditions: boundary id " +
+                               std::to_string(id) +
+                               " does not occur on the mesh (its boundary "
+                               "ids: " +
+                               present + "; see Geometry/Type)");
+            }
 
       affine_constraints.clear();
       DoFTools::make_hanging_node_constraints(dofs, affine_constraints);
