@@ -5,8 +5,9 @@
 # sigma_rt, one panel per variant).
 # Usage: scripts/spinning_disk_study.sh [OUT]   (default results/spinning_disk)
 # A variant is a family with optional suffixes: +filter (assumed-stress
-# filter), +enriched (the filter with Filter field = enriched) and +APIC
-# (Velocity transfer = APIC), e.g. CPDI+enriched+APIC.
+# filter), +enriched (the filter with Filter field = enriched), +force (the
+# filter with Filtered stress = force only) and +APIC (Velocity transfer =
+# APIC), e.g. CPDI+filter+force+APIC.
 # Environment: END (end time, default 6.2), CELLS (grid cells per direction
 # over [-1.25,1.25], default 50: h = 0.05), CFL (default 0.5), VARIANTS
 # (default below), NP (MPI ranks, default 1), MPM (executable), PLOT (the
@@ -28,8 +29,9 @@ echo "variant,h,cfl,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_c
 start=$(date +%s)
 for v in $variants; do
   family=${v%%+*}
-  filter="" transfer=FLIP field=Pian-Sumihara
+  filter="" transfer=FLIP field=Pian-Sumihara target="written back"
   case "$v" in *+filter*|*+enriched*) filter="set Stress filter = assumed stress" ;; esac
+  case "$v" in *+force*) target="force only" ;; esac
   case "$v" in *+enriched*) field=enriched ;; esac
   case "$v" in *+APIC*) transfer=APIC ;; esac
   dir="$out/$v"
@@ -57,6 +59,7 @@ subsection Bodies
     subsection Locking remedies
       $filter
       set Filter field = $field
+      set Filtered stress = $target
     end
   end
 end

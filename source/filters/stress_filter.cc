@@ -15,6 +15,7 @@ namespace mpm
       , compliance(bodies.size())
       , projections(bodies.size())
       , enriched(bodies.size(), 0)
+      , write_back(bodies.size(), 1)
       , last_J0(bodies.size())
       , material(bodies.size())
       , out_of_plane_nu(bodies.size(), 0.)
@@ -23,6 +24,7 @@ namespace mpm
         {
           is_filtered[b] = bodies[b].prm.assumed_stress_filter;
           enriched[b]    = bodies[b].prm.enriched_filter;
+          write_back[b]  = !bodies[b].prm.filter_force_only;
           material[b]    = bodies[b].material.get();
           any_filtered   = any_filtered || is_filtered[b];
           metric[b] =
@@ -69,7 +71,7 @@ namespace mpm
           const Result result = projections[b]->project(samples, beta);
           if (result != Result::full)
             ++n_fallbacks;
-          if (result == Result::unchanged)
+          if (result == Result::unchanged || !write_back[b])
             return result;
           // Write back; the material makes each stress consistent with its
           // internal variables (plastic models return it to the yield surface).
@@ -113,7 +115,7 @@ namespace mpm
         grid, particles, [&](const auto &cell, const auto &pic) {
           const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
           for (unsigned int b = 0; b < is_filtered.size(); ++b)
-            if (is_filtered[b])
+            if (is_filtered[b] && write_back[b])
               filter_cell(J0, pic, b, beta);
         });
     }

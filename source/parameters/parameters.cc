@@ -442,6 +442,16 @@ namespace mpm
         "cell's Q1 velocities but keeps a stress that varies along the "
         "motion of a convecting body (doc/theory.md 4.8).");
       prm.declare_entry(
+        "Filtered stress",
+        "written back",
+        Patterns::Selection("written back|force only"),
+        "What the assumed-stress projection replaces. written back: the "
+        "particles' stresses (the seed; the strains are made consistent). "
+        "force only: the projected field makes the internal force, the "
+        "particles keep the stresses their material computed, so a smooth "
+        "stress the field cannot represent is not cut back every step "
+        "(doc/theory.md 4.13). Elastic and hyperelastic materials only.");
+      prm.declare_entry(
         "Volumetric smoothing",
         "none",
         Patterns::Selection("none|cell|node"),
@@ -483,6 +493,7 @@ namespace mpm
       convection_body_force = prm.get_bool("Body force correction");
       compliance_metric     = prm.get("Filter metric") == "compliance";
       enriched_filter       = prm.get("Filter field") == "enriched";
+      filter_force_only     = prm.get("Filtered stress") == "force only";
       const std::string vs  = prm.get("Volumetric smoothing");
       volumetric_smoothing = vs == "cell" ? filters::VolumetricSmoothing::cell :
                              vs == "node" ? filters::VolumetricSmoothing::node :

@@ -166,6 +166,23 @@ namespace mpm
                            "/Locking remedies: Filter metric = compliance "
                            "needs a material with elastic moduli; '" +
                            body.material->name() + "' has none");
+        if (body.prm.assumed_stress_filter && body.prm.filter_force_only &&
+            body.material->n_history() > 0)
+          throw InputError(where +
+                           "/Locking remedies: Filtered stress = force only "
+                           "leaves the particles' stresses unfiltered, so '" +
+                           body.material->name() +
+                           "' would compute its plastic state from a locked "
+                           "stress; use Filtered stress = written back");
+        if (body.prm.assumed_stress_filter && body.prm.filter_force_only &&
+            !params.time.apic)
+          throw InputError(
+            where +
+            "/Locking remedies: Filtered stress = force only needs Time "
+            "stepping/Velocity transfer = APIC: the stress the projection "
+            "does not see accumulates in the particles, and with FLIP's "
+            "transfer noise it grows until the step is unstable "
+            "(doc/theory.md 4.13); use Filtered stress = written back");
         if (body.material->n_history() > 0 && history_names.empty())
           history_names = body.material->history_names();
       }

@@ -46,6 +46,9 @@ namespace mpm
       for (unsigned int d = 0; d < dim; ++d)
         centre[d] = 0.5;
       shape_functions::Stencil<dim> st;
+      // Filtered stress = force only: the projected stresses of this
+      // cell's particles, by their properties (a handful per cell).
+      std::vector<std::pair<const double *, Tensor<2, dim>>> projected;
 
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
@@ -54,6 +57,7 @@ namespace mpm
               {
                 // Project the filtered bodies' stresses of this cell first;
                 // the force below then uses the projected stresses.
+                projected.clear();
                 std::fill(present.begin(), present.end(), 0);
                 for (const auto &p : pic)
                   present[static_cast<unsigned int>(
@@ -61,8 +65,14 @@ namespace mpm
                 const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
                 double               beta[filters::StressFilter<dim>::n_beta];
                 for (unsigned int b = 0; b < bodies.size(); ++b)
-                  if (present[b] && filter->filtered(b))
-                    filter->filter_cell(J0, pic, b, beta);
+                  if (present[b] && filter->filtered(b) &&
+                      filter->filter_cell(J0, pic, b, beta) !=
+                        filters::StressFilter<dim>::Result::unchanged &&
+                      !filter->writes_back(b))
+                    for (unsigned int k = 0; k < filter->n_projected(); ++k)
+                      projected.emplace_back(filter->projected_particle(k),
+                                             Tensor<2, dim>(
+                                               filter->projected_stress(k)));
               }
           const unsigned int index = cell->active_cell_index();
           for (const auto &p : pic)
@@ -77,8 +87,11 @@ namespace mpm
                 {
                   const unsigned int b =
                     static_cast<unsigned int>(prop[L::body]);
-                  sigma =
-                    -prop[L::volume] * in_plane_stress<dim>(prop + L::stress);
+                  sigma = in_plane_stress<dim>(prop + L::stress);
+                  for (const auto &[q, s] : projected)
+                    if (q == prop)
+                      sigma = s;
+                  sigma *= -prop[L::volume];
                   bodies[b].external_force_at(p.get_location(),
                                               prop + L::X,
                                               m,

@@ -28,6 +28,11 @@ namespace mpm
      * projection over the particles the cell holds at that moment; output
      * calls apply() so that what is written is that same state (the
      * projection is idempotent, so this changes nothing for the dynamics).
+     *
+     * A body with `Filtered stress = force only` is projected the same way
+     * but nothing is written back: the field makes the force only, and
+     * projected_stress() gives the projected particle stresses of the last
+     * filter_cell() (for the domain families, whose force is per particle).
      */
     template <int dim>
     class StressFilter
@@ -50,6 +55,34 @@ namespace mpm
       any() const
       {
         return any_filtered;
+      }
+
+      /// Whether body @p b's projected stresses replace its particles'.
+      bool
+      writes_back(const unsigned int b) const
+      {
+        return write_back[b];
+      }
+
+      /**
+       * After filter_cell() for a body that does not write back: the
+       * projected in-plane stress of the k-th of its particles in the cell
+       * (in the cell's particle order), and that particle's properties.
+       */
+      unsigned int
+      n_projected() const
+      {
+        return samples.size();
+      }
+      const dealii::SymmetricTensor<2, dim> &
+      projected_stress(const unsigned int k) const
+      {
+        return samples[k].stress;
+      }
+      const double *
+      projected_particle(const unsigned int k) const
+      {
+        return targets[k];
       }
 
       /**
@@ -90,7 +123,8 @@ namespace mpm
       std::vector<Metric>                                        metric;
       std::vector<dealii::SymmetricTensor<4, dim>>               compliance;
       std::vector<std::unique_ptr<AssumedStressProjection<dim>>> projections;
-      std::vector<char> enriched; ///< Filter field = enriched, per body
+      std::vector<char> enriched;   ///< Filter field = enriched, per body
+      std::vector<char> write_back; ///< not Filtered stress = force only
       std::vector<dealii::Tensor<2, dim>>      last_J0;
       std::vector<StressSample<dim>>           samples;
       std::vector<double *>                    targets;

@@ -122,9 +122,12 @@ namespace mpm
       std::vector<dealii::types::boundary_id> traction_boundary_ids;
 
       /// Locking remedies of this body (doc/theory.md).
-      bool                         assumed_stress_filter = false;
-      bool                         compliance_metric     = false;
-      bool                         enriched_filter       = false;
+      bool assumed_stress_filter = false;
+      bool compliance_metric     = false;
+      bool enriched_filter       = false;
+      /// Filtered stress = force only: the projection makes the force,
+      /// the particles keep their own stresses.
+      bool                         filter_force_only = false;
       filters::VolumetricSmoothing volumetric_smoothing =
         filters::VolumetricSmoothing::none;
       bool convection_correction = false; ///< 1D only
