@@ -30,6 +30,43 @@ namespace mpm
       template <>
       constexpr unsigned int voigt_j<3>[6] = {0, 1, 2, 2, 2, 1};
 
+      /// Every column k of the natural basis P has one nonzero: natural
+      /// component row[k] times the monomial mono[k] of the natural
+      /// coordinates r (2D: 1, r0, r1; 3D: 1, r0, r1, r2, r1 r2, r0 r2,
+      /// r0 r1). So H_kl = (T^T W T)[row k][row l] sum_p w_p m_k m_l needs
+      /// only the particles' monomial moments (natural_basis() order).
+      template <int dim>
+      struct BasisColumns;
+      template <>
+      struct BasisColumns<2>
+      {
+        static constexpr unsigned int n_mono  = 3;
+        static constexpr unsigned int row[7]  = {0, 1, 2, 0, 1, 0, 1};
+        static constexpr unsigned int mono[7] = {0, 0, 0, 2, 1, 1, 2};
+        static void
+        monomials(const double *r, double *m)
+        {
+          m[0] = 1, m[1] = r[0], m[2] = r[1];
+        }
+      };
+      template <>
+      struct BasisColumns<3>
+      {
+        static constexpr unsigned int n_mono   = 7;
+        static constexpr unsigned int row[21]  = {0, 0, 0, 0, 1, 1, 1,
+                                                  1, 2, 2, 2, 2, 3, 3,
+                                                  4, 4, 5, 5, 0, 1, 2};
+        static constexpr unsigned int mono[21] = {0, 2, 3, 4, 0, 1, 3,
+                                                  5, 0, 1, 2, 6, 0, 1,
+                                                  0, 2, 0, 3, 1, 2, 3};
+        static void
+        monomials(const double *r, double *m)
+        {
+          m[0] = 1, m[1] = r[0], m[2] = r[1], m[3] = r[2];
+          m[4] = r[1] * r[2], m[5] = r[0] * r[2], m[6] = r[0] * r[1];
+        }
+      };
+
       /// Constant-stress columns of the basis (the fallback subspace).
       template <int dim>
       std::vector<unsigned int>
@@ -182,44 +219,56 @@ namespace mpm
       std::vector<StressSample<dim>> &samples,
       double                         *beta_out) const
     {
-      using Matrix = Eigen::Matrix<double, n_beta, n_beta>;
-      using Vector = Eigen::Matrix<double, n_beta, 1>;
-      Matrix H     = Matrix::Zero();
-      Vector R     = Vector::Zero();
-      double total = 0;
-      // natural_basis() fills the first n[a] entries of each row, the only
-      // ones read (no zero-initialisation in this per-particle path)
-      unsigned int n[n_voigt], col[n_voigt][5];
-      double       val[n_voigt][5];
+      using Matrix                  = Eigen::Matrix<double, n_beta, n_beta>;
+      using Vector                  = Eigen::Matrix<double, n_beta, 1>;
+      using C                       = BasisColumns<dim>;
+      constexpr unsigned int n_mono = C::n_mono;
+      // Per particle only the monomial moments sum_p w m_i m_j and the
+      // moments of T^T W sigma, sum_p w m_i (T^T W sigma)_a; H and R are
+      // put together from them once per cell.
+      double moment[n_mono][n_mono] = {};
+      double rhs[n_voigt][n_mono]   = {};
+      double total                  = 0;
       for (const auto &p : samples)
         {
           if (!(p.weight > 0))
             continue;
           total += p.weight;
-          natural_basis(p.xi, n, col, val);
+          double r[dim], m[n_mono];
+          for (unsigned int d = 0; d < dim; ++d)
+            r[d] = 2 * p.xi[d] - 1;
+          C::monomials(r, m);
+          for (unsigned int i = 0; i < n_mono; ++i)
+            {
+              const double wm = p.weight * m[i];
+              for (unsigned int j = i; j < n_mono; ++j)
+                moment[i][j] += wm * m[j];
+            }
           // T^T W sigma: the stress seen from the natural components
-          double v[n_voigt] = {};
           for (unsigned int a = 0; a < n_voigt; ++a)
-            for (unsigned int b = 0; b < n_voigt; ++b)
-              v[a] += TW[a][b] * p.stress[voigt_i<dim>[b]][voigt_j<dim>[b]];
-          // R += w P^T v, H += w P^T (T^T W T) P over the few nonzeros
-          for (unsigned int a = 0; a < n_voigt; ++a)
-            for (unsigned int t = 0; t < n[a]; ++t)
-              {
-                const double pa = p.weight * val[a][t];
-                R(col[a][t]) += pa * v[a];
-                for (unsigned int b = 0; b < n_voigt; ++b)
-                  {
-                    const double m = pa * TWT[a][b];
-                    if (m == 0.)
-                      continue;
-                    for (unsigned int u = 0; u < n[b]; ++u)
-                      H(col[a][t], col[b][u]) += m * val[b][u];
-                  }
-              }
+            {
+              double v = 0;
+              for (unsigned int b = 0; b < n_voigt; ++b)
+                v += TW[a][b] * p.stress[voigt_i<dim>[b]][voigt_j<dim>[b]];
+              v *= p.weight;
+              for (unsigned int i = 0; i < n_mono; ++i)
+                rhs[a][i] += v * m[i];
+            }
         }
       if (!(total > 0))
         return Result::unchanged;
+      Matrix H;
+      Vector R;
+      for (unsigned int k = 0; k < n_active; ++k)
+        {
+          R(k) = rhs[C::row[k]][C::mono[k]];
+          for (unsigned int l = 0; l < n_active; ++l)
+            {
+              const unsigned int i = std::min(C::mono[k], C::mono[l]);
+              const unsigned int j = std::max(C::mono[k], C::mono[l]);
+              H(k, l)              = TWT[C::row[k]][C::row[l]] * moment[i][j];
+            }
+        }
 
       double beta[n_beta] = {};
       Result result       = Result::full;
