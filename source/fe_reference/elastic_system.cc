@@ -9,6 +9,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <mpm/fe_reference/displacement_function.h>
 #include <mpm/fe_reference/elastic_system.h>
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
@@ -30,37 +31,6 @@ namespace mpm
       {
         return dim == 2 ? "x,y" : "x,y,z";
       }
-
-      /// The prescribed displacement as a function of all the system's
-      /// components (the pressure component, if any, is not constrained).
-      template <int dim>
-      class PrescribedDisplacement : public Function<dim>
-      {
-      public:
-        PrescribedDisplacement(const Expression<dim> &u,
-                               const unsigned int     n_components)
-          : Function<dim>(n_components)
-          , u(u)
-        {}
-
-        void
-        vector_value(const Point<dim> &p, Vector<double> &values) const override
-        {
-          values = 0;
-          u.value(p, 0, values.data());
-        }
-
-        double
-        value(const Point<dim> &p, const unsigned int component) const override
-        {
-          Vector<double> v(this->n_components);
-          vector_value(p, v);
-          return v[component];
-        }
-
-      private:
-        const Expression<dim> &u;
-      };
 
       /// Rigid-body motion k: translations along x, y(, z), then rotations
       /// about z (2D), or about x, y, z (3D); zero pressure.
@@ -172,13 +142,13 @@ namespace mpm
       for (const auto id : bc.clamped)
         VectorTools::interpolate_boundary_values(
           mapping, dofs, id, zero, affine_constraints, u_mask);
-      const Expression<dim>             prescribed(bc.prescribed_displacement,
+      const Expression<dim>           prescribed(bc.prescribed_displacement,
                                        dim,
                                        coordinate_names(dim),
                                        parameters.constants,
                                        false,
                                        "Prescribed displacement");
-      const PrescribedDisplacement<dim> g(prescribed, fe->n_components());
+      const DisplacementFunction<dim> g(prescribed, fe->n_components());
       for (const auto id : bc.prescribed)
         VectorTools::interpolate_boundary_values(
           mapping, dofs, id, g, affine_constraints, u_mask);

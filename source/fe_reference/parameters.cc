@@ -19,34 +19,6 @@ namespace mpm
 
     namespace
     {
-      std::string
-      zeros(const int dim)
-      {
-        std::string s = "0";
-        for (int d = 1; d < dim; ++d)
-          s += "; 0";
-        return s;
-      }
-
-      std::string
-      point_text(const int dim, const double value)
-      {
-        std::string s;
-        for (int d = 0; d < dim; ++d)
-          s += (d ? ", " : "") + Utilities::to_string(value);
-        return s;
-      }
-
-      std::vector<types::boundary_id>
-      id_list(const std::string &text)
-      {
-        std::vector<types::boundary_id> ids;
-        for (const int i :
-             Utilities::string_to_int(Utilities::split_string_list(text, ',')))
-          ids.push_back(static_cast<types::boundary_id>(i));
-        return ids;
-      }
-
       /// "0,0; 48,44; ..." in the counter-clockwise order the user writes
       /// (2D; in 3D the bottom face, then the top face), returned in
       /// deal.II's lexicographic vertex order.
@@ -96,11 +68,11 @@ namespace mpm
         "1 to corner 2, 2 from corner 0 to corner 1, 3 from corner 2 to "
         "corner 3). mesh file: a Gmsh or UCD file with its boundary ids.");
       prm.declare_entry("Lower corner",
-                        point_text(dim, 0.),
+                        Parameters::default_point(dim, 0.),
                         Patterns::List(Patterns::Double(), dim, dim),
                         "Box: lower corner.");
       prm.declare_entry("Upper corner",
-                        point_text(dim, 1.),
+                        Parameters::default_point(dim, 1.),
                         Patterns::List(Patterns::Double(), dim, dim),
                         "Box: upper corner.");
       prm.declare_entry("Corners",
@@ -242,7 +214,7 @@ namespace mpm
                         ids,
                         "All components given by Prescribed displacement.");
       prm.declare_entry("Prescribed displacement",
-                        zeros(dim),
+                        Parameters::default_expression(dim),
                         Patterns::Anything(),
                         "dim expressions of " + xyz +
                           " and the Constants, separated by ';'.");
@@ -252,13 +224,13 @@ namespace mpm
                         "Boundary ids carrying the Traction. Boundaries "
                         "not listed anywhere are free.");
       prm.declare_entry("Traction",
-                        zeros(dim),
+                        Parameters::default_expression(dim),
                         Patterns::Anything(),
                         "Surface traction [force/area; in 2D force/length "
                         "per unit thickness], dim expressions of " +
                           xyz + " separated by ';'.");
       prm.declare_entry("Body force",
-                        zeros(dim),
+                        Parameters::default_expression(dim),
                         Patterns::Anything(),
                         "Body force per unit mass (gravity) [m/s^2], dim "
                         "expressions of " +
@@ -270,10 +242,12 @@ namespace mpm
     BoundaryConditions::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Boundary conditions");
-      clamped      = id_list(prm.get("Clamped boundary ids"));
-      slip         = id_list(prm.get("Slip boundary ids"));
-      prescribed   = id_list(prm.get("Prescribed displacement boundary ids"));
-      traction_ids = id_list(prm.get("Traction boundary ids"));
+      clamped    = Parameters::parse_id_list(prm.get("Clamped boundary ids"));
+      slip       = Parameters::parse_id_list(prm.get("Slip boundary ids"));
+      prescribed = Parameters::parse_id_list(
+        prm.get("Prescribed displacement boundary ids"));
+      traction_ids =
+        Parameters::parse_id_list(prm.get("Traction boundary ids"));
       prescribed_displacement = prm.get("Prescribed displacement");
       traction                = prm.get("Traction");
       body_force              = prm.get("Body force");
@@ -366,7 +340,7 @@ namespace mpm
                         "modal: eigenfrequencies reported (not counting "
                         "rigid-body modes).");
       prm.declare_entry("Points of interest",
-                        point_text(dim, 0.),
+                        Parameters::default_point(dim, 0.),
                         Patterns::Anything(),
                         "static: points where the displacement is "
                         "evaluated, separated by ';' (e.g. '48, 52; 48, "

@@ -18,25 +18,6 @@ namespace mpm
 
     namespace
     {
-      /// "0; 0" for vector-valued expressions
-      std::string
-      default_expression(const int dim)
-      {
-        std::string s = "0";
-        for (int d = 1; d < dim; ++d)
-          s += "; 0";
-        return s;
-      }
-
-      std::string
-      default_point(const int dim, const double value)
-      {
-        std::string s;
-        for (int d = 0; d < dim; ++d)
-          s += (d ? ", " : "") + Utilities::to_string(value);
-        return s;
-      }
-
       std::vector<unsigned int>
       parse_unsigned_list(const std::string &text,
                           const unsigned int n,
@@ -61,16 +42,36 @@ namespace mpm
         return out;
       }
 
-      std::vector<types::boundary_id>
-      parse_id_list(const std::string &text)
-      {
-        std::vector<types::boundary_id> ids;
-        for (const int i :
-             Utilities::string_to_int(Utilities::split_string_list(text, ',')))
-          ids.push_back(static_cast<types::boundary_id>(i));
-        return ids;
-      }
     } // namespace
+
+    /// "0; 0" for vector-valued expressions
+    std::string
+    default_expression(const int dim)
+    {
+      std::string s = "0";
+      for (int d = 1; d < dim; ++d)
+        s += "; 0";
+      return s;
+    }
+
+    std::string
+    default_point(const int dim, const double value)
+    {
+      std::string s;
+      for (int d = 0; d < dim; ++d)
+        s += (d ? ", " : "") + Utilities::to_string(value);
+      return s;
+    }
+
+    std::vector<types::boundary_id>
+    parse_id_list(const std::string &text)
+    {
+      std::vector<types::boundary_id> ids;
+      for (const int i :
+           Utilities::string_to_int(Utilities::split_string_list(text, ',')))
+        ids.push_back(static_cast<types::boundary_id>(i));
+      return ids;
+    }
 
     template <int dim>
     Point<dim>

@@ -10,6 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <mpm/fe_reference/displacement_function.h>
 #include <mpm/fe_reference/elastic_system.h>
 #include <mpm/fe_reference/reference_mesh.h>
 #include <mpm/utilities/expression.h>
@@ -62,27 +63,8 @@ namespace
     {
       // the exact field as a function of all the system's components (the
       // mixed formulation's pressure is compared through the stress)
-      struct Exact : Function<dim>
-      {
-        const mpm::Expression<dim> &u;
-        Exact(const mpm::Expression<dim> &u, const unsigned int n)
-          : Function<dim>(n)
-          , u(u)
-        {}
-        void
-        vector_value(const Point<dim> &x, Vector<double> &v) const override
-        {
-          v = 0;
-          u.value(x, 0, v.data());
-        }
-        double
-        value(const Point<dim> &x, const unsigned int c) const override
-        {
-          Vector<double> v(this->n_components);
-          vector_value(x, v);
-          return v[c];
-        }
-      } exact_function(u, dim + (mixed ? 1 : 0));
+      const mpm::fe_reference::DisplacementFunction<dim> exact_function(
+        u, dim + (mixed ? 1 : 0));
       VectorTools::interpolate(system.dof_handler(), exact_function, exact);
     }
     // displacement dofs only

@@ -211,5 +211,16 @@ namespace mpm
     template <int dim>
     dealii::Point<dim>
     parse_point(const std::string &text, const std::string &entry);
+
+    /// "1, 2, 5" into boundary ids (the pattern has checked the range).
+    std::vector<dealii::types::boundary_id>
+    parse_id_list(const std::string &text);
+
+    /// Default texts of declared entries: "0; 0" for a vector-valued
+    /// expression, "v, v" for a point.
+    std::string
+    default_expression(const int dim);
+    std::string
+    default_point(const int dim, const double value);
   } // namespace Parameters
 } // namespace mpm
