@@ -7,6 +7,7 @@
 #include <mpm/benchmarks/self_weight_column.h>
 #include <mpm/benchmarks/spinning_disk.h>
 #include <mpm/benchmarks/thick_cylinder.h>
+#include <mpm/benchmarks/water_column.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/utilities/input_error.h>
 
@@ -174,10 +175,25 @@ namespace mpm
             throw InputError(
               "Benchmark = manufactured solution needs Dimension 2 or 3");
         }
+      if (name == "water column")
+        {
+          if constexpr (dim >= 2)
+            {
+              const double a = constant(constants, "a", name);
+              return std::make_unique<WaterColumn<dim>>(
+                a,
+                constant(constants, "g", name),
+                constant(constants, "rho", name),
+                constants.count("wall_band") ? constants.at("wall_band") :
+                                               a / 10);
+            }
+          else
+            throw InputError("Benchmark = water column needs Dimension 2 or 3");
+        }
       throw InputError("Benchmark = '" + name +
                        "' is unknown; known: none, axial bar, spinning disk, "
                        "cantilever, self-weight column, convecting bar, "
-                       "thick cylinder, manufactured solution");
+                       "thick cylinder, manufactured solution, water column");
     }
 
     template std::unique_ptr<Benchmark<1>>

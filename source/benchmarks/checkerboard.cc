@@ -18,6 +18,19 @@ namespace mpm
                  const std::function<double(const double *)> &error,
                  const MPI_Comm                               comm)
     {
+      return checkerboard_with_position<dim>(
+        particles,
+        [&](const double *prop, const Point<dim> &) { return error(prop); },
+        comm);
+    }
+
+    template <int dim>
+    double
+    checkerboard_with_position(
+      Particles::ParticleHandler<dim> &particles,
+      const std::function<double(const double *, const Point<dim> &)> &error,
+      const MPI_Comm                                                   comm)
+    {
       using L = ParticleLayout<dim>;
       // The cells of the particles: global indices, so that every rank
       // sees the sums of every cell.
@@ -36,7 +49,7 @@ namespace mpm
           const double  V    = prop[L::volume];
           const auto c = p.get_surrounding_cell()->global_active_cell_index();
           local[2 * c] += V;
-          local[2 * c + 1] += error(prop) * V;
+          local[2 * c + 1] += error(prop, p.get_location()) * V;
         }
       std::vector<double> sum(local.size());
       Utilities::MPI::sum(local, comm, sum);
@@ -85,5 +98,15 @@ namespace mpm
     checkerboard<3>(Particles::ParticleHandler<3> &,
                     const std::function<double(const double *)> &,
                     const MPI_Comm);
+    template double
+    checkerboard_with_position<2>(
+      Particles::ParticleHandler<2> &,
+      const std::function<double(const double *, const Point<2> &)> &,
+      const MPI_Comm);
+    template double
+    checkerboard_with_position<3>(
+      Particles::ParticleHandler<3> &,
+      const std::function<double(const double *, const Point<3> &)> &,
+      const MPI_Comm);
   } // namespace benchmarks
 } // namespace mpm

@@ -104,6 +104,22 @@ namespace mpm
 
 
 
+    double
+    NewtonianFluid::initial_jacobian(const SymmetricTensor<2, 3> &stress) const
+    {
+      const double p0 = -dealii::trace(stress) / 3;
+      if (p0 == 0)
+        return 1.;
+      // linear: 1/J = 1 + p0/K; Tait: J^-gamma = 1 + gamma p0/K
+      const double base = 1 + exponent() * p0 / K;
+      // NaN: set-up reports a non-finite initial state (on every rank)
+      if (!(base > 0) || !std::isfinite(base))
+        return std::nan("");
+      return std::pow(base, -1 / exponent());
+    }
+
+
+
     void
     NewtonianFluid::update_stress(const PointKinematics &point,
                                   SymmetricTensor<2, 3> &stress,

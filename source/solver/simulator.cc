@@ -10,6 +10,7 @@
 #include <mpm/utilities/numbers.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -275,6 +276,17 @@ namespace mpm
       }
     else
       std::copy(sigma, sigma + 6, out);
+    // A model of F (the fluid's equation of state) starts at the J of the
+    // initial pressure, so that the pressure is not lost at its first
+    // update; the mass stays rho0 V0.
+    const double J0 = body.material->initial_jacobian(load_stress(out));
+    if (J0 != 1.)
+      {
+        const double stretch = std::pow(J0, 1. / dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          p[L::F + d * dim + d] = stretch;
+        p[L::volume] = J0 * s.volume;
+      }
   }
 
   template <int dim>

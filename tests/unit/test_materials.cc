@@ -591,6 +591,37 @@ BOOST_AUTO_TEST_CASE(equation_of_state_and_energy)
                                      point.velocity_gradient))) < 1e-12);
 }
 
+BOOST_AUTO_TEST_CASE(initial_jacobian_inverts_the_equation_of_state)
+{
+  // The J with p(J) = -tr(sigma0)/3, so that an initial pressure persists;
+  // NaN below the law's limit (-K, -K/gamma).
+  for (const std::string eos : {"linear", "Tait"})
+    {
+      BOOST_TEST_CONTEXT("equation of state " << eos)
+      {
+        const auto model = make_model<NewtonianFluid>(
+          {{"Equation of state", eos}, {"Bulk modulus", "6.25e5"}});
+        for (const double p0 : {-5e4, -1.0, 0.0, 1121.0, 3e5})
+          {
+            SymmetricTensor<2, 3> sigma =
+              -p0 * dealii::unit_symmetric_tensor<3>();
+            sigma[0][1]    = 7.0; // deviatoric part: ignored
+            const double J = model.initial_jacobian(sigma);
+            BOOST_TEST(J > 0);
+            BOOST_TEST(std::abs(model.pressure(J) - p0) <=
+                       1e-9 * (1 + std::abs(p0)));
+          }
+        const double limit = eos == "linear" ? -6.25e5 : -6.25e5 / 7;
+        BOOST_TEST(std::isnan(model.initial_jacobian(
+          -1.01 * limit * dealii::unit_symmetric_tensor<3>())));
+      }
+    }
+  // Models that keep their stress start at J = 1.
+  const auto elastic = make_model<LinearElastic>({});
+  BOOST_TEST(
+    elastic.initial_jacobian(-1e5 * dealii::unit_symmetric_tensor<3>()) == 1.0);
+}
+
 BOOST_AUTO_TEST_CASE(tait_with_unit_exponent_is_linear)
 {
   const auto linear =

@@ -21,5 +21,17 @@ namespace mpm
     checkerboard(dealii::Particles::ParticleHandler<dim> &particles,
                  const std::function<double(const double *properties)> &error,
                  const MPI_Comm                                         comm);
+
+    /**
+     * The same for a quantity of the properties and the current position
+     * of the particle (e.g. the pressure less a hydrostatic gradient).
+     */
+    template <int dim>
+    double
+    checkerboard_with_position(
+      dealii::Particles::ParticleHandler<dim> &particles,
+      const std::function<double(const double             *properties,
+                                 const dealii::Point<dim> &location)> &error,
+      const MPI_Comm                                                   comm);
   } // namespace benchmarks
 } // namespace mpm

@@ -128,6 +128,23 @@ namespace mpm
         (void)history;
       }
 
+      /**
+       * The volume ratio J = det F at which the model's own stress has
+       * the pressure of the initial stress @p stress (-tr/3). Models that
+       * compute the stress from F alone and would otherwise overwrite an
+       * `Initial stress` at the first update (the fluid's equation of
+       * state) return it, and the particle starts with the isotropic F of
+       * that J, so the initial pressure persists. 1 (the default): the
+       * model keeps the initial stress itself, or ignores it. NaN if no
+       * such J exists (set-up reports a non-finite initial state).
+       */
+      virtual double
+      initial_jacobian(const SymmetricTensor<2, 3> &stress) const
+      {
+        (void)stress;
+        return 1.;
+      }
+
       /// Reference mass density rho_0.
       double
       reference_density() const

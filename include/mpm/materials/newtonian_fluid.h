@@ -52,6 +52,14 @@ namespace mpm
       double
       wave_speed(const Tensor<2, 3> &F) const override;
 
+      /// The J of the pressure -tr(stress)/3: the inverse of the
+      /// equation of state, so that an initial hydrostatic stress
+      /// persists (NaN if the pressure is at or below the law's limit,
+      /// -K for the linear law, -K/gamma for Tait: set-up then reports a
+      /// non-finite initial state).
+      double
+      initial_jacobian(const SymmetricTensor<2, 3> &stress) const override;
+
       /// Pressure p(J) from the equation of state.
       double
       pressure(const double J) const;

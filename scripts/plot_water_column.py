@@ -1,0 +1,67 @@
+#!/usr/bin/python3
+"""Water column collapse figure from scripts/water_column_study.sh output:
+the surge front Z(T) and the height at the wall H(tau) of the runs against
+Martin & Moyce (1952) (also h = a/10 and a/40 if the grid study was run),
+and the particles coloured by the pressure
+p / (rho g 2a) at the output nearest T = 2 (or the last output of a run
+that stopped before), without and with theta-bar.
+Usage: plot_water_column.py STUDY_DIR OUT.png"""
+import glob
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+
+from water_column_rms import (A, H_DATA, T_DATA, T_SNAPSHOT, TAU_DATA, Z_DATA,
+                              statistics)
+
+study, out = sys.argv[1], sys.argv[2]
+runs = [("standard", "standard MPM"), ("theta-bar", "theta-bar (cell)")]
+rho, g = 1000.0, 9.81
+
+fig = plt.figure(figsize=(14, 8.5))
+grid = fig.add_gridspec(2, 2, height_ratios=[1.4, 1])
+ax_z, ax_h = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
+ax_z.plot(T_DATA, Z_DATA, "ko", label="Martin & Moyce 1952")
+ax_h.plot(TAU_DATA, H_DATA, "ko", label="Martin & Moyce 1952")
+for (run, label), style in zip(runs, ["-", "--"]):
+    s = statistics(f"{study}/{run}")
+    ax_z.plot(s["T"], s["Z"], style, label=label)
+    ax_h.plot(s["tau"], s["H"], style, label=label)
+# the grid study of water_column_study.sh OUT grid, if it was run
+for run, label, style in [("standard_h10", "standard, h = a/10", ":"),
+                          ("standard_h40", "standard, h = a/40", "-.")]:
+    if os.path.exists(f"{study}/{run}/statistics.txt"):
+        s = statistics(f"{study}/{run}")
+        ax_z.plot(s["T"], s["Z"], style, lw=1, label=label)
+        ax_h.plot(s["tau"], s["H"], style, lw=1, label=label)
+ax_z.set(xlim=(0, 3.6), ylim=(0.9, 4.6), xlabel="T = t sqrt(2g/a)",
+         ylabel="Z = x_front / a", title="surge front")
+ax_h.set(xlim=(0, 7.8), ylim=(0, 1.05), xlabel="tau = t sqrt(g/a)",
+         ylabel="H = h / (2a)", title="height at the wall")
+ax_z.legend(fontsize=8)
+ax_h.legend(fontsize=8)
+
+for i, (run, label) in enumerate(runs):
+    ax = fig.add_subplot(grid[1, i])
+    s = statistics(f"{study}/{run}")
+    k = int((s["T"] - T_SNAPSHOT).abs().idxmin())
+    d = pd.read_csv(sorted(glob.glob(f"{study}/{run}/particles-*.csv"))[k])
+    p = -(d.stress_xx + d.stress_yy + d.stress_zz) / 3 / (rho * g * 2 * A)
+    sc = ax.scatter(d.x / A, d.y / A, c=p, s=4, cmap="viridis",
+                    vmin=-0.2, vmax=1.2)
+    ax.set_aspect("equal")
+    ax.set(xlim=(0, 4.6), ylim=(0, 2.1), xlabel="x / a", ylabel="y / a",
+           title=f"{label}: p / (rho g 2a) at T = {s['T'][k]:.2f}\n"
+                 f"checkerboard {s.checkerboard[k]:.3f}")
+    fig.colorbar(sc, ax=ax, fraction=0.025, pad=0.02)
+fig.suptitle("Water column collapse, h = a/20, 2x2 particles per cell "
+             "(scripts/water_column_study.sh)")
+fig.tight_layout()
+fig.savefig(out, dpi=110)
+print(f"wrote {out}")

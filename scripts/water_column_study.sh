@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Water column collapse (BENCHMARKS.md section 6, prm/water_column.prm):
+# runs the case with standard MPM and with the cell theta-bar
+# (Volumetric smoothing = cell), one after the other on one core, keeps
+# each run's output in OUT/<variant>/ and its screen output in
+# OUT/<variant>.log, writes OUT/table.md (scripts/water_column_rms.py:
+# RMS of Z and H against Martin & Moyce, checkerboard, largest speed, wall
+# time) and the figure doc/figures/water_column.png
+# (scripts/plot_water_column.py).
+# With the second argument "grid" it also runs standard MPM on h = a/10
+# (to the end) and h = a/40 (to t = 0.19 s, T = 3.5: the front data only;
+# about 3 minutes) into OUT/standard_h10, OUT/standard_h40.
+# Usage: scripts/water_column_study.sh [OUT] [grid]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=$(realpath -m "${1:-results/water_column}")
+variants="standard theta-bar"
+[ "${2:-}" = grid ] && variants="$variants standard_h10 standard_h40"
+mkdir -p "$out"
+: > "$out/times.txt"
+for variant in $variants; do
+  smoothing=none
+  [ $variant = theta-bar ] && smoothing=cell
+  # cells per a (20 in the parameter file) and end time
+  n=20; end=0.57
+  [ $variant = standard_h10 ] && n=10
+  [ $variant = standard_h40 ] && { n=40; end=0.19; }
+  dir="$out/$variant"
+  cat > "$out/$variant.prm" <<PRM
+include $root/prm/water_column.prm
+subsection Grid
+  set Subdivisions = $((25 * n)), $((5 * n / 2))
+end
+subsection Time stepping
+  set End time = $end
+end
+subsection Output
+  set Directory = $dir
+  set Write vtu = false
+end
+subsection Bodies
+  subsection Body 0
+    set Subdivisions = $n, $((2 * n))
+    subsection Locking remedies
+      set Volumetric smoothing = $smoothing
+    end
+  end
+end
+PRM
+  rm -rf "$dir"
+  start=$(date +%s.%N)
+  # a run that stops (status 2) keeps its output up to there: report it
+  status=0
+  "$root/build/mpm" "$out/$variant.prm" > "$out/$variant.log" 2>&1 || status=$?
+  end=$(date +%s.%N)
+  note=""
+  [ $status = 0 ] || note=" (stopped, status $status: $(grep -o 'stopped at step.*' "$out/$variant.log" | head -1))"
+  echo "$variant $(python3 -c "print(f'{$end - $start:.1f}')")$note" | tee -a "$out/times.txt"
+done
+# c = sqrt(K/rho) of the parameter file
+c=$(python3 -c "import math; print(math.sqrt(6.25e5/1000))")
+{
+  runs=""
+  for variant in $variants; do runs="$runs $out/$variant"; done
+  /usr/bin/python3 "$root/scripts/water_column_rms.py" --check-csv --c "$c" $runs
+  echo
+  echo "wall time [s] (whole run, one core):"
+  cat "$out/times.txt"
+} | tee "$out/table.md"
+mkdir -p "$root/doc/figures"
+/usr/bin/python3 "$root/scripts/plot_water_column.py" "$out" "$root/doc/figures/water_column.png"
