@@ -735,6 +735,11 @@ namespace mpm
           statistics_file->open(out.directory + "/statistics.txt",
                                 benchmark ? benchmark->columns() :
                                             std::vector<std::string>());
+          // Every entry of this run (defaults included, no comments), so
+          // that scripts/recompute_measures.py finds the benchmark, its
+          // constants and the grid beside the output.
+          prm.print_parameters(out.directory + "/parameters.prm",
+                               ParameterHandler::ShortPRM);
         }
       catch (const std::exception &e)
         {
