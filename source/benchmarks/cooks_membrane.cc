@@ -114,7 +114,10 @@ namespace mpm
           if (r < nearest.first)
             nearest = {r, particle.get_location()[1] - X[1]};
         }
+      // every rank picks the same: the first of the smallest distance in
+      // rank order
       const auto all = Utilities::MPI::all_gather(comm, nearest);
+      nearest        = all[0];
       for (const auto &candidate : all)
         if (candidate.first < nearest.first)
           nearest = candidate;
