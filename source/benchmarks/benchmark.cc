@@ -3,6 +3,7 @@
 #include <mpm/benchmarks/benchmark.h>
 #include <mpm/benchmarks/cantilever.h>
 #include <mpm/benchmarks/convecting_bar.h>
+#include <mpm/benchmarks/cooks_membrane.h>
 #include <mpm/benchmarks/manufactured_solution.h>
 #include <mpm/benchmarks/self_weight_column.h>
 #include <mpm/benchmarks/spinning_disk.h>
@@ -156,6 +157,25 @@ namespace mpm
           else
             throw InputError("Benchmark = thick cylinder needs Dimension = 2");
         }
+      if (name == "cooks membrane")
+        {
+          if constexpr (dim == 2)
+            {
+              const double F     = constant(constants, "F", name);
+              const double r_fit = constant(constants, "r_fit", name);
+              if (!(F != 0) || !(r_fit > 0))
+                throw InputError("Benchmark = cooks membrane needs the "
+                                 "constants F != 0 (the ratios are divided "
+                                 "by it) and r_fit > 0");
+              return std::make_unique<CooksMembrane<dim>>(
+                F,
+                constant(constants, "uy_ref", name),
+                constant(constants, "uy_ref_mid", name),
+                r_fit);
+            }
+          else
+            throw InputError("Benchmark = cooks membrane needs Dimension = 2");
+        }
       if (name == "manufactured solution")
         {
           if constexpr (dim >= 2)
@@ -193,7 +213,8 @@ namespace mpm
       throw InputError("Benchmark = '" + name +
                        "' is unknown; known: none, axial bar, spinning disk, "
                        "cantilever, self-weight column, convecting bar, "
-                       "thick cylinder, manufactured solution, water column");
+                       "thick cylinder, cooks membrane, manufactured "
+                       "solution, water column");
     }
 
     template std::unique_ptr<Benchmark<1>>

@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm/fe_reference/parameters.h>
+#include <mpm/grid/quadrilateral_mesh.h>
 #include <mpm/materials/elasticity.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/utilities/expression.h>
@@ -35,19 +36,7 @@ namespace mpm
         std::vector<Point<dim>> ccw;
         for (const auto &p : parts)
           ccw.push_back(Parameters::parse_point<dim>(p, "Geometry/Corners"));
-        if (dim == 1)
-          return ccw;
-        // counter-clockwise 0 1 2 3 -> lexicographic 0 1 3 2, per layer
-        std::vector<Point<dim>> lex(ccw.size());
-        for (unsigned int layer = 0; layer < ccw.size() / 4; ++layer)
-          {
-            const unsigned int o = 4 * layer;
-            lex[o + 0]           = ccw[o + 0];
-            lex[o + 1]           = ccw[o + 1];
-            lex[o + 2]           = ccw[o + 3];
-            lex[o + 3]           = ccw[o + 2];
-          }
-        return lex;
+        return lexicographic_corners(ccw, "Geometry/Corners");
       }
     } // namespace
 

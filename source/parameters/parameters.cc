@@ -1,6 +1,7 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <mpm/grid/quadrilateral_mesh.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
@@ -324,10 +325,12 @@ namespace mpm
       const std::string xyz = dim == 1 ? "x" : dim == 2 ? "x, y" : "x, y, z";
       prm.declare_entry("Geometry",
                         "box",
-                        Patterns::Selection("box|ball|mesh file"),
+                        Patterns::Selection("box|ball|quadrilateral|mesh file"),
                         "Body mesh: a subdivided box, a ball (disk in 2D) "
-                        "meshed conformingly, or a mesh file. Each body "
-                        "cell is split into n^dim particle domains.");
+                        "meshed conformingly, a quadrilateral (the "
+                        "subdivided unit box mapped bi/trilinearly onto the "
+                        "Corners), or a mesh file. Each body cell is split "
+                        "into n^dim particle domains.");
       prm.declare_entry("Lower corner",
                         default_point(dim, 0.25),
                         Patterns::List(Patterns::Double(), dim, dim),
@@ -339,7 +342,19 @@ namespace mpm
       prm.declare_entry("Subdivisions",
                         "4",
                         Patterns::List(Patterns::Integer(1), 1, dim),
-                        "Box: body cells per direction.");
+                        "Box and quadrilateral: body cells per direction "
+                        "(one number for all directions, or one each).");
+      prm.declare_entry(
+        "Corners",
+        "",
+        Patterns::Anything(),
+        "Quadrilateral: the 2^dim corners separated by ';', counter-"
+        "clockwise in 2D (Cook's membrane: 0, 0; 48, 44; 48, 60; 0, 44); in "
+        "3D the bottom face counter-clockwise, then the top face. Boundary "
+        "ids as for a box in the corners' own directions (2D: 0 the edge "
+        "from the first corner to the fourth, 1 from the second to the "
+        "third, 2 from the first to the second, 3 from the third to the "
+        "fourth).");
       prm.declare_entry("Center",
                         default_point(dim, 0.5),
                         Patterns::List(Patterns::Double(), dim, dim),
@@ -470,9 +485,10 @@ namespace mpm
     Body<dim>::parse_parameters(ParameterHandler &prm)
     {
       const std::string g = prm.get("Geometry");
-      geometry            = g == "box"  ? Geometry::box :
-                            g == "ball" ? Geometry::ball :
-                                          Geometry::mesh_file;
+      geometry            = g == "box"           ? Geometry::box :
+                            g == "ball"          ? Geometry::ball :
+                            g == "quadrilateral" ? Geometry::quadrilateral :
+                                                   Geometry::mesh_file;
       lower = parse_point<dim>(prm.get("Lower corner"), "Lower corner");
       upper = parse_point<dim>(prm.get("Upper corner"), "Upper corner");
       subdivisions =
@@ -517,6 +533,21 @@ namespace mpm
         throw InputError("Radius must be positive");
       if (geometry == Geometry::mesh_file && mesh_file.empty())
         throw InputError("Geometry = mesh file needs Mesh file to be set");
+      corners.clear();
+      const std::string corners_text = prm.get("Corners");
+      if (geometry == Geometry::quadrilateral)
+        {
+          if (corners_text.empty())
+            throw InputError("Geometry = quadrilateral needs Corners");
+          std::vector<Point<dim>> ccw;
+          for (const auto &c : Utilities::split_string_list(corners_text, ';'))
+            ccw.push_back(parse_point<dim>(c, "Corners"));
+          corners =
+            lexicographic_corners(ccw, "Corners = '" + corners_text + "'");
+        }
+      else if (!corners_text.empty())
+        throw InputError("Corners is set but Geometry = " + g +
+                         " does not use it");
     }
 
     // ---------------------------------------------------------------- Output

@@ -3,6 +3,7 @@
 
 #include <mpm/grid/box_mesh.h>
 #include <mpm/grid/mesh_reader.h>
+#include <mpm/grid/quadrilateral_mesh.h>
 #include <mpm/particles/body.h>
 #include <mpm/shape_functions/q1_cell.h>
 #include <mpm/utilities/input_error.h>
@@ -63,6 +64,12 @@ namespace mpm
               GridGenerator::hyper_ball_balanced(mesh, prm.center, prm.radius);
               mesh.refine_global(prm.refinements);
             }
+          break;
+        case G::quadrilateral:
+          create_quadrilateral_mesh(mesh,
+                                    prm.subdivisions,
+                                    prm.corners,
+                                    where + "/Corners");
           break;
         case G::mesh_file:
           read_mesh(mesh, prm.mesh_file, input_folder, where + "/Mesh file");

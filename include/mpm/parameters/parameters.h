@@ -104,16 +104,18 @@ namespace mpm
       {
         box,
         ball,
+        quadrilateral, ///< the subdivided unit box mapped onto 2^dim corners
         mesh_file
       };
-      Geometry                  geometry = Geometry::box;
-      dealii::Point<dim>        lower, upper;
-      std::vector<unsigned int> subdivisions;
-      dealii::Point<dim>        center;
-      double                    radius      = 1.0;
-      unsigned int              refinements = 2;
-      std::string               mesh_file;
-      unsigned int              particles_per_direction = 2;
+      Geometry                        geometry = Geometry::box;
+      dealii::Point<dim>              lower, upper;
+      std::vector<unsigned int>       subdivisions;
+      std::vector<dealii::Point<dim>> corners; ///< deal.II vertex order
+      dealii::Point<dim>              center;
+      double                          radius      = 1.0;
+      unsigned int                    refinements = 2;
+      std::string                     mesh_file;
+      unsigned int                    particles_per_direction = 2;
 
       std::string initial_velocity; // muparser, dim components
       std::string initial_stress;   // muparser, Voigt components
