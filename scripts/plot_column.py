@@ -18,6 +18,11 @@ study, out = sys.argv[1], sys.argv[2]
 H, rho, g, nu = 10.0, 80.0, 10.0, 0.499
 
 
+# the finest grid the study ran (0.25 in the full study)
+h_fine = min(glob.glob(f"{study}/aligned_{nu}_*_standard"),
+             key=lambda d: float(d.split("_")[-2])).split("_")[-2]
+
+
 def last_csv(run):
     return pd.read_csv(sorted(glob.glob(f"{study}/{run}/particles-*.csv"))[-1])
 
@@ -26,7 +31,7 @@ fig, axes = plt.subplots(1, 5, figsize=(17, 5.5), sharey=False)
 panels = [("aligned", "standard"), ("distorted", "standard"),
           ("distorted", "theta-bar"), ("distorted", "node-average")]
 for ax, (grid, variant) in zip(axes[:4], panels):
-    d = last_csv(f"{grid}_{nu}_0.25_{variant}")
+    d = last_csv(f"{grid}_{nu}_{h_fine}_{variant}")
     p = -(d.stress_xx + d.stress_yy + d.stress_zz) / 3 / (rho * g * H)
     ax.plot(p, d.X_y, ".", ms=3, label="particles")
     Y = [0, H]

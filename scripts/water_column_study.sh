@@ -5,7 +5,7 @@
 # each run's output in OUT/<variant>/ and its screen output in
 # OUT/<variant>.log, writes OUT/table.md (scripts/water_column_rms.py:
 # RMS of Z and H against Martin & Moyce, checkerboard, largest speed, wall
-# time) and the figure doc/figures/water_column.png
+# time) and the figure doc/figures/water_column.png (or $PLOT)
 # (scripts/plot_water_column.py).
 # With the second argument "grid" it also runs standard MPM on h = a/10
 # (to the end) and h = a/40 (to t = 0.19 s, T = 3.5: the front data only;
@@ -67,5 +67,6 @@ c=$(python3 -c "import math; print(math.sqrt(6.25e5/1000))")
   echo "wall time [s] (whole run, one core):"
   cat "$out/times.txt"
 } | tee "$out/table.md"
-mkdir -p "$root/doc/figures"
-/usr/bin/python3 "$root/scripts/plot_water_column.py" "$out" "$root/doc/figures/water_column.png"
+plot=${PLOT:-$root/doc/figures/water_column.png}
+mkdir -p "$(dirname "$plot")"
+/usr/bin/python3 "$root/scripts/plot_water_column.py" "$out" "$plot"
