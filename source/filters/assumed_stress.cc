@@ -5,9 +5,6 @@
 
 #include <Eigen/Dense>
 
-// GCC cannot see that only the entries natural_basis() filled are read.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 namespace mpm
 {
   namespace filters
@@ -30,11 +27,14 @@ namespace mpm
       template <>
       constexpr unsigned int voigt_j<3>[6] = {0, 1, 2, 2, 2, 1};
 
-      /// Every column k of the natural basis P has one nonzero: natural
-      /// component row[k] times the monomial mono[k] of the natural
-      /// coordinates r (2D: 1, r0, r1; 3D: 1, r0, r1, r2, r1 r2, r0 r2,
-      /// r0 r1). So H_kl = (T^T W T)[row k][row l] sum_p w_p m_k m_l needs
-      /// only the particles' monomial moments (natural_basis() order).
+      /// The natural field Sigma(r) = P(r) beta. Every column k of P has one
+      /// nonzero: natural component row[k] (Voigt order) times the monomial
+      /// mono[k] of the natural coordinates r in [-1, 1] (2D: 1, r0, r1;
+      /// 3D: 1, r0, r1, r2, r1 r2, r0 r2, r0 r1). 2D Pian-Sumihara:
+      /// ss = b1 + b4 t, tt = b2 + b5 s, st = b3, enriched + b6 s, b7 t;
+      /// 3D: the 18-beta hexahedral field, enriched + b19 xi, b20 eta,
+      /// b21 zeta on the normal stresses. So H_kl = (T^T W T)[row k][row l]
+      /// sum_p w_p m_k m_l needs only the particles' monomial moments.
       template <int dim>
       struct BasisColumns;
       template <>
@@ -84,8 +84,7 @@ namespace mpm
       const Metric                   metric,
       const SymmetricTensor<4, dim> &compliance,
       const bool                     enriched)
-      : enriched(enriched)
-      , n_active(enriched ? n_beta : (dim == 2 ? 5 : 18))
+      : n_active(enriched ? n_beta : (dim == 2 ? 5 : 18))
     {
       // The scale of J0 only rescales beta; normalising keeps H well
       // conditioned whatever the cell size.
@@ -131,77 +130,18 @@ namespace mpm
     }
 
     template <int dim>
-    __attribute__((always_inline)) inline void
-    AssumedStressProjection<dim>::natural_basis(const Point<dim> &xi,
-                                                unsigned int (&n)[n_voigt],
-                                                unsigned int (&col)[n_voigt][5],
-                                                double (&val)[n_voigt][5]) const
-    {
-      // natural coordinates in [-1, 1]
-      double r[dim];
-      for (unsigned int d = 0; d < dim; ++d)
-        r[d] = 2 * xi[d] - 1;
-      auto set = [&](const unsigned int                                     a,
-                     std::initializer_list<std::pair<unsigned int, double>> t) {
-        n[a] = 0;
-        for (const auto &[k, v] : t)
-          {
-            col[a][n[a]] = k;
-            val[a][n[a]] = v;
-            ++n[a];
-          }
-      };
-      if constexpr (dim == 2)
-        {
-          // Pian-Sumihara: ss = b1 + b4 t, tt = b2 + b5 s, st = b3
-          (void)set;
-          n[0] = 2, col[0][0] = 0, val[0][0] = 1., col[0][1] = 3,
-          val[0][1] = r[1];
-          n[1] = 2, col[1][0] = 1, val[1][0] = 1., col[1][1] = 4,
-          val[1][1] = r[0];
-          n[2] = 1, col[2][0] = 2, val[2][0] = 1.;
-          if (enriched)
-            {
-              col[0][2] = 5, val[0][2] = r[0], n[0] = 3;
-              col[1][2] = 6, val[1][2] = r[1], n[1] = 3;
-            }
-        }
-      else
-        {
-          // 18-beta hexahedral field
-          set(0, {{0, 1.}, {1, r[1]}, {2, r[2]}, {3, r[1] * r[2]}});
-          set(1, {{4, 1.}, {5, r[0]}, {6, r[2]}, {7, r[0] * r[2]}});
-          set(2, {{8, 1.}, {9, r[0]}, {10, r[1]}, {11, r[0] * r[1]}});
-          set(3, {{12, 1.}, {13, r[0]}});
-          set(4, {{14, 1.}, {15, r[1]}});
-          set(5, {{16, 1.}, {17, r[2]}});
-          if (enriched)
-            for (unsigned int a = 0; a < 3; ++a)
-              {
-                col[a][n[a]] = 18 + a;
-                val[a][n[a]] = r[a];
-                ++n[a];
-              }
-        }
-    }
-
-    template <int dim>
     __attribute__((always_inline)) inline SymmetricTensor<2, dim>
     AssumedStressProjection<dim>::field(const Point<dim> &xi,
                                         const double     *beta) const
     {
-      // natural_basis() fills the first n[a] entries of each row, the only
-      // ones read (no zero-initialisation in this per-particle path)
-      unsigned int n[n_voigt], col[n_voigt][5];
-      double       val[n_voigt][5];
-      natural_basis(xi, n, col, val);
-      double natural[n_voigt];
-      for (unsigned int a = 0; a < n_voigt; ++a)
-        {
-          natural[a] = 0;
-          for (unsigned int t = 0; t < n[a]; ++t)
-            natural[a] += val[a][t] * beta[col[a][t]];
-        }
+      using C = BasisColumns<dim>;
+      double r[dim], m[C::n_mono];
+      for (unsigned int d = 0; d < dim; ++d)
+        r[d] = 2 * xi[d] - 1;
+      C::monomials(r, m);
+      double natural[n_voigt] = {};
+      for (unsigned int k = 0; k < n_active; ++k)
+        natural[C::row[k]] += beta[k] * m[C::mono[k]];
       SymmetricTensor<2, dim> sigma;
       for (unsigned int a = 0; a < n_voigt; ++a)
         {

@@ -94,17 +94,7 @@ namespace mpm
       field(const dealii::Point<dim> &xi, const double *beta) const;
 
     private:
-      /// The natural field Sigma(xi) = P(xi) beta is sparse: each natural
-      /// component a has at most 4 terms (column k, value). Fills them and
-      /// returns their counts per component.
-      void
-      natural_basis(const dealii::Point<dim> &xi,
-                    unsigned int (&n_terms)[n_voigt],
-                    unsigned int (&column)[n_voigt][5],
-                    double (&value)[n_voigt][5]) const;
-
-      bool         enriched;
-      unsigned int n_active;
+      unsigned int n_active; ///< 5 / 18, or 7 / 21 with the enriched field
 
       /// Cartesian Voigt components of natural unit stresses (columns): T.
       double transform[n_voigt][n_voigt];
