@@ -27,46 +27,6 @@ namespace mpm
       template <>
       constexpr unsigned int voigt_j<3>[6] = {0, 1, 2, 2, 2, 1};
 
-      /// The natural field Sigma(r) = P(r) beta. Every column k of P has one
-      /// nonzero: natural component row[k] (Voigt order) times the monomial
-      /// mono[k] of the natural coordinates r in [-1, 1] (2D: 1, r0, r1;
-      /// 3D: 1, r0, r1, r2, r1 r2, r0 r2, r0 r1). 2D Pian-Sumihara:
-      /// ss = b1 + b4 t, tt = b2 + b5 s, st = b3, enriched + b6 s, b7 t;
-      /// 3D: the 18-beta hexahedral field, enriched + b19 xi, b20 eta,
-      /// b21 zeta on the normal stresses. So H_kl = (T^T W T)[row k][row l]
-      /// sum_p w_p m_k m_l needs only the particles' monomial moments.
-      template <int dim>
-      struct BasisColumns;
-      template <>
-      struct BasisColumns<2>
-      {
-        static constexpr unsigned int n_mono  = 3;
-        static constexpr unsigned int row[7]  = {0, 1, 2, 0, 1, 0, 1};
-        static constexpr unsigned int mono[7] = {0, 0, 0, 2, 1, 1, 2};
-        static void
-        monomials(const double *r, double *m)
-        {
-          m[0] = 1, m[1] = r[0], m[2] = r[1];
-        }
-      };
-      template <>
-      struct BasisColumns<3>
-      {
-        static constexpr unsigned int n_mono   = 7;
-        static constexpr unsigned int row[21]  = {0, 0, 0, 0, 1, 1, 1,
-                                                  1, 2, 2, 2, 2, 3, 3,
-                                                  4, 4, 5, 5, 0, 1, 2};
-        static constexpr unsigned int mono[21] = {0, 2, 3, 4, 0, 1, 3,
-                                                  5, 0, 1, 2, 6, 0, 1,
-                                                  0, 2, 0, 3, 1, 2, 3};
-        static void
-        monomials(const double *r, double *m)
-        {
-          m[0] = 1, m[1] = r[0], m[2] = r[1], m[3] = r[2];
-          m[4] = r[1] * r[2], m[5] = r[0] * r[2], m[6] = r[0] * r[1];
-        }
-      };
-
       /// Constant-stress columns of the basis (the fallback subspace).
       template <int dim>
       std::vector<unsigned int>
@@ -134,7 +94,7 @@ namespace mpm
     AssumedStressProjection<dim>::field(const Point<dim> &xi,
                                         const double     *beta) const
     {
-      using C = BasisColumns<dim>;
+      using C = internal::BasisColumns<dim>;
       double r[dim], m[C::n_mono];
       for (unsigned int d = 0; d < dim; ++d)
         r[d] = 2 * xi[d] - 1;
@@ -154,64 +114,116 @@ namespace mpm
     }
 
     template <int dim>
+    void
+    AssumedStressProjection<dim>::add(Moments                       &sums,
+                                      const Point<dim>              &xi,
+                                      const double                   weight,
+                                      const SymmetricTensor<2, dim> &stress) const
+    {
+      using C = internal::BasisColumns<dim>;
+      if (!(weight > 0))
+        return;
+      sums.total += weight;
+      double r[dim], m[n_monomials];
+      for (unsigned int d = 0; d < dim; ++d)
+        r[d] = 2 * xi[d] - 1;
+      C::monomials(r, m);
+      for (unsigned int i = 0; i < n_monomials; ++i)
+        {
+          const double wm = weight * m[i];
+          for (unsigned int j = i; j < n_monomials; ++j)
+            sums.moment[i][j] += wm * m[j];
+        }
+      // T^T W sigma: the stress seen from the natural components
+      for (unsigned int a = 0; a < n_voigt; ++a)
+        {
+          double v = 0;
+          for (unsigned int b = 0; b < n_voigt; ++b)
+            v += TW[a][b] * stress[voigt_i<dim>[b]][voigt_j<dim>[b]];
+          v *= weight;
+          for (unsigned int i = 0; i < n_monomials; ++i)
+            sums.rhs[a][i] += v * m[i];
+        }
+    }
+
+    template <int dim>
     typename AssumedStressProjection<dim>::Result
     AssumedStressProjection<dim>::project(
       std::vector<StressSample<dim>> &samples,
       double                         *beta_out) const
     {
-      using Matrix                  = Eigen::Matrix<double, n_beta, n_beta>;
-      using Vector                  = Eigen::Matrix<double, n_beta, 1>;
-      using C                       = BasisColumns<dim>;
-      constexpr unsigned int n_mono = C::n_mono;
-      // Per particle only the monomial moments sum_p w m_i m_j and the
-      // moments of T^T W sigma, sum_p w m_i (T^T W sigma)_a; H and R are
-      // put together from them once per cell.
-      double moment[n_mono][n_mono] = {};
-      double rhs[n_voigt][n_mono]   = {};
-      double total                  = 0;
+      Moments sums{};
       for (const auto &p : samples)
-        {
-          if (!(p.weight > 0))
-            continue;
-          total += p.weight;
-          double r[dim], m[n_mono];
-          for (unsigned int d = 0; d < dim; ++d)
-            r[d] = 2 * p.xi[d] - 1;
-          C::monomials(r, m);
-          for (unsigned int i = 0; i < n_mono; ++i)
-            {
-              const double wm = p.weight * m[i];
-              for (unsigned int j = i; j < n_mono; ++j)
-                moment[i][j] += wm * m[j];
-            }
-          // T^T W sigma: the stress seen from the natural components
-          for (unsigned int a = 0; a < n_voigt; ++a)
-            {
-              double v = 0;
-              for (unsigned int b = 0; b < n_voigt; ++b)
-                v += TW[a][b] * p.stress[voigt_i<dim>[b]][voigt_j<dim>[b]];
-              v *= p.weight;
-              for (unsigned int i = 0; i < n_mono; ++i)
-                rhs[a][i] += v * m[i];
-            }
-        }
-      if (!(total > 0))
-        return Result::unchanged;
-      Matrix H;
-      Vector R;
+        add(sums, p.xi, p.weight, p.stress);
+      double       beta[n_beta];
+      const Result result = solve(sums, beta);
+      if (result == Result::unchanged)
+        return result;
+      const CartesianField sigma = cartesian_field(beta);
+      for (auto &p : samples)
+        p.stress = sigma.value(p.xi);
+      if (beta_out)
+        std::copy(beta, beta + n_beta, beta_out);
+      return result;
+    }
+
+    template <int dim>
+    typename AssumedStressProjection<dim>::CartesianField
+    AssumedStressProjection<dim>::cartesian_field(const double *beta) const
+    {
+      using C = internal::BasisColumns<dim>;
+      double natural[n_voigt][n_monomials] = {};
       for (unsigned int k = 0; k < n_active; ++k)
+        natural[C::row[k]][C::mono[k]] += beta[k];
+      CartesianField sigma;
+      for (unsigned int a = 0; a < n_voigt; ++a)
+        for (unsigned int i = 0; i < n_monomials; ++i)
+          {
+            double s = 0;
+            for (unsigned int b = 0; b < n_voigt; ++b)
+              s += transform[a][b] * natural[b][i];
+            sigma.c[a][i] = s;
+          }
+      return sigma;
+    }
+
+    template <int dim>
+    typename AssumedStressProjection<dim>::Result
+    AssumedStressProjection<dim>::solve(const Moments &sums,
+                                        double        *beta) const
+    {
+      std::fill(beta, beta + n_beta, 0.);
+      if (!(sums.total > 0))
+        return Result::unchanged;
+      // The field's size as a compile-time constant: the loops below
+      // unroll (this solve runs once per cell and body every step).
+      if constexpr (dim == 2)
+        return n_active == 5 ? solve_sized<5>(sums, beta) :
+                               solve_sized<7>(sums, beta);
+      else
+        return n_active == 18 ? solve_sized<18>(sums, beta) :
+                                solve_sized<21>(sums, beta);
+    }
+
+    template <int dim>
+    template <unsigned int n>
+    typename AssumedStressProjection<dim>::Result
+    AssumedStressProjection<dim>::solve_sized(const Moments &sums,
+                                              double        *beta) const
+    {
+      using C = internal::BasisColumns<dim>;
+      double H[n][n], R[n];
+      for (unsigned int k = 0; k < n; ++k)
         {
-          R(k) = rhs[C::row[k]][C::mono[k]];
-          for (unsigned int l = 0; l < n_active; ++l)
+          R[k] = sums.rhs[C::row[k]][C::mono[k]];
+          for (unsigned int l = 0; l < n; ++l)
             {
               const unsigned int i = std::min(C::mono[k], C::mono[l]);
               const unsigned int j = std::max(C::mono[k], C::mono[l]);
-              H(k, l)              = TWT[C::row[k]][C::row[l]] * moment[i][j];
+              H[k][l] = TWT[C::row[k]][C::row[l]] * sums.moment[i][j];
             }
         }
 
-      double beta[n_beta] = {};
-      Result result       = Result::full;
       // H is symmetric positive semi-definite. Its LDL^T factorisation
       // (unpivoted: the matrix is tiny and SPD when the layout is good)
       // says whether the layout determines every beta: a pivot below
@@ -220,69 +232,65 @@ namespace mpm
       // Solving anyway would amplify the round-off of the particle sums
       // by up to the inverse ratio: with 1e-10 serial and parallel runs
       // of a 3D collision drifted apart by 1e-4.
-      double L[n_beta][n_beta], D[n_beta];
-      bool   regular = true;
-      for (unsigned int j = 0; j < n_active && regular; ++j)
+      double L[n][n], D[n];
+      for (unsigned int j = 0; j < n; ++j)
         {
-          double d = H(j, j);
+          double d = H[j][j];
           for (unsigned int k = 0; k < j; ++k)
             d -= L[j][k] * L[j][k] * D[k];
-          if (!(d > 1e-6 * H(j, j)))
-            {
-              regular = false;
-              break;
-            }
+          if (!(d > 1e-6 * H[j][j]))
+            return solve_constant(H, R, beta);
           D[j] = d;
-          for (unsigned int i = j + 1; i < n_active; ++i)
+          for (unsigned int i = j + 1; i < n; ++i)
             {
-              double l = H(i, j);
+              double l = H[i][j];
               for (unsigned int k = 0; k < j; ++k)
                 l -= L[i][k] * L[j][k] * D[k];
               L[i][j] = l / d;
             }
         }
-      if (regular)
+      // L y = R, D z = y, L^T beta = z
+      for (unsigned int i = 0; i < n; ++i)
         {
-          // L y = R, D z = y, L^T beta = z
-          for (unsigned int i = 0; i < n_active; ++i)
-            {
-              double y = R(i);
-              for (unsigned int k = 0; k < i; ++k)
-                y -= L[i][k] * beta[k];
-              beta[i] = y;
-            }
-          for (unsigned int i = 0; i < n_active; ++i)
-            beta[i] /= D[i];
-          for (unsigned int i = n_active; i-- > 0;)
-            for (unsigned int k = i + 1; k < n_active; ++k)
-              beta[i] -= L[k][i] * beta[k];
+          double y = R[i];
+          for (unsigned int k = 0; k < i; ++k)
+            y -= L[i][k] * beta[k];
+          beta[i] = y;
         }
-      else
+      for (unsigned int i = 0; i < n; ++i)
+        beta[i] /= D[i];
+      for (unsigned int i = n; i-- > 0;)
+        for (unsigned int k = i + 1; k < n; ++k)
+          beta[i] -= L[k][i] * beta[k];
+      return Result::full;
+    }
+
+    template <int dim>
+    template <unsigned int n>
+    typename AssumedStressProjection<dim>::Result
+    AssumedStressProjection<dim>::solve_constant(const double (&H)[n][n],
+                                                 const double (&R)[n],
+                                                 double *beta) const
+    {
+      const auto      c   = constant_columns<dim>();
+      const unsigned  n_c = c.size();
+      Eigen::MatrixXd Hc(n_c, n_c);
+      Eigen::VectorXd Rc(n_c);
+      for (unsigned int i = 0; i < n_c; ++i)
         {
-          result              = Result::constant;
-          const auto      c   = constant_columns<dim>();
-          const unsigned  n_c = c.size();
-          Eigen::MatrixXd Hc(n_c, n_c);
-          Eigen::VectorXd Rc(n_c);
-          for (unsigned int i = 0; i < n_c; ++i)
-            {
-              Rc(i) = R(c[i]);
-              for (unsigned int j = 0; j < n_c; ++j)
-                Hc(i, j) = H(c[i], c[j]);
-            }
-          const Eigen::LDLT<Eigen::MatrixXd> ldlt_c(Hc);
-          if (!(ldlt_c.info() == Eigen::Success && ldlt_c.isPositive() &&
-                ldlt_c.rcond() > 1e-12))
-            return Result::unchanged;
-          const Eigen::VectorXd b = ldlt_c.solve(Rc);
-          for (unsigned int i = 0; i < n_c; ++i)
-            beta[c[i]] = b(i);
+          Rc(i) = R[c[i]];
+          for (unsigned int j = 0; j < n_c; ++j)
+            Hc(i, j) = H[c[i]][c[j]];
         }
-      for (auto &p : samples)
-        p.stress = field(p.xi, beta);
-      if (beta_out)
-        std::copy(beta, beta + n_beta, beta_out);
-      return result;
+      std::fill(beta, beta + n_beta, 0.);
+      const Eigen::LDLT<Eigen::MatrixXd> ldlt_c(Hc);
+      if (!(ldlt_c.info() == Eigen::Success && ldlt_c.isPositive() &&
+            ldlt_c.rcond() > 1e-12))
+        return Result::unchanged;
+      const Eigen::VectorXd b = ldlt_c.solve(Rc);
+      for (unsigned int i = 0; i < n_c; ++i)
+        beta[c[i]] = b(i);
+      return Result::constant;
     }
 
     template <int dim>

@@ -1,5 +1,6 @@
 #include <mpm/filters/assumed_stress_force.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mpm
@@ -10,14 +11,11 @@ namespace mpm
 
     namespace
     {
-      /// The quadratic Lagrange polynomials of the nodes 0, 1/2, 1.
-      inline void
-      lagrange(const double t, double *l)
-      {
-        l[0] = (2 * t - 1) * (t - 1);
-        l[1] = 4 * t * (1 - t);
-        l[2] = t * (2 * t - 1);
-      }
+      /// The quadratic Lagrange polynomials of the nodes r = -1, 0, 1 as
+      /// coefficients of 1, r, r^2.
+      constexpr double lagrange[3][3] = {{0, -0.5, 0.5},
+                                         {1, 0, -1},
+                                         {0, 0.5, 0.5}};
     } // namespace
 
     template <int dim>
@@ -25,50 +23,31 @@ namespace mpm
     AssumedStressForce<dim>::clear()
     {
       for (unsigned int k = 0; k < n_points; ++k)
-        weight[k] = 0;
+        moment[k] = 0;
       any = false;
     }
 
     template <int dim>
     void
-    AssumedStressForce<dim>::add_particle(const Point<dim>     &xi,
-                                          const Tensor<2, dim> &q,
-                                          const double          V)
+    AssumedStressForce<dim>::lattice_weights(double *weight) const
     {
-      any = true;
-      // 1D averages of l_0, l_1, l_2 over [c - a, c + a]: l(c) + l'' a^2/6
-      // with l'' = 4, -8, 4.
-      double l[dim][3];
-      for (unsigned int d = 0; d < dim; ++d)
+      // W = (L x L (x L)) M, one direction at a time
+      double a[n_points], b[n_points];
+      std::copy(moment, moment + n_points, a);
+      unsigned int stride = 1;
+      for (unsigned int d = 0; d < dim; ++d, stride *= 3)
         {
-          double a2 = 0;
-          for (unsigned int k = 0; k < dim; ++k)
-            a2 += q[d][k] * q[d][k];
-          lagrange(xi[d], l[d]);
-          const double c = 4 * a2 / 6;
-          l[d][0] += c;
-          l[d][1] -= 2 * c;
-          l[d][2] += c;
-        }
-      if constexpr (dim == 2)
-        {
-          for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int k = 0; k < n_points; ++k)
             {
-              const double lj = V * l[1][j];
-              for (unsigned int i = 0; i < 3; ++i)
-                weight[i + 3 * j] += lj * l[0][i];
+              const unsigned int i    = (k / stride) % 3;
+              const unsigned int base = k - i * stride;
+              b[k]                    = 0;
+              for (unsigned int c = 0; c < 3; ++c)
+                b[k] += lagrange[i][c] * a[base + c * stride];
             }
+          std::copy(b, b + n_points, a);
         }
-      else
-        {
-          for (unsigned int m = 0; m < 3; ++m)
-            for (unsigned int j = 0; j < 3; ++j)
-              {
-                const double ljm = V * l[1][j] * l[2][m];
-                for (unsigned int i = 0; i < 3; ++i)
-                  weight[i + 3 * j + 9 * m] += ljm * l[0][i];
-              }
-        }
+      std::copy(a, a + n_points, weight);
     }
 
     template <int dim>
@@ -116,6 +95,49 @@ namespace mpm
       const double                       *beta,
       double                             *force) const
     {
+      add_internal_force(geo, field, beta, field.cartesian_field(beta), force);
+    }
+
+    template <int dim>
+    void
+    AssumedStressForce<dim>::add_internal_force(
+      const shape_functions::Q1Cell<dim>                         &geo,
+      const AssumedStressProjection<dim>                         &field,
+      const double                                               *beta,
+      const typename AssumedStressProjection<dim>::CartesianField &sigma,
+      double                                                     *force) const
+    {
+      if constexpr (dim == 2)
+        if (geo.is_box)
+          {
+            // sigma_c = c0 + c1 r0 + c2 r1 (c: xx yy xy); the integrals of
+            // sigma_c, sigma_c r0 and sigma_c r1 over the particles
+            const double M00 = moment[0], M10 = moment[1], M20 = moment[2],
+                         M01 = moment[3], M11 = moment[4], M02 = moment[6];
+            double I[3], X[3], Y[3];
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                const double *k = sigma.c[c];
+                I[c]            = k[0] * M00 + k[1] * M10 + k[2] * M01;
+                X[c]            = k[0] * M10 + k[1] * M20 + k[2] * M11;
+                Y[c]            = k[0] * M01 + k[1] * M11 + k[2] * M02;
+              }
+            // node v = i + 2 j: dN/dx0 = s_i (1 + s_j r1) / (2 h0),
+            // dN/dx1 = s_j (1 + s_i r0) / (2 h1), s = -1, +1
+            const double g0 = 0.5 / geo.extent[0], g1 = 0.5 / geo.extent[1];
+            for (unsigned int v = 0; v < 4; ++v)
+              {
+                const double si = (v & 1) ? 1. : -1.;
+                const double sj = (v & 2) ? 1. : -1.;
+                force[2 * v] -= si * g0 * (I[0] + sj * Y[0]) +
+                                sj * g1 * (I[2] + si * X[2]);
+                force[2 * v + 1] -= si * g0 * (I[2] + sj * Y[2]) +
+                                    sj * g1 * (I[1] + si * X[1]);
+              }
+            return;
+          }
+      double weight[n_points];
+      lattice_weights(weight);
       if (geo.is_box)
         {
           // Cells of one size share the operator (the field is fixed by

@@ -17,7 +17,10 @@ namespace mpm
       , enriched(bodies.size(), 0)
       , write_back(bodies.size(), 1)
       , last_J0(bodies.size())
+      , sums(bodies.size())
+      , fields(bodies.size())
       , material(bodies.size())
+      , n_history(bodies.size(), 0)
       , out_of_plane_nu(bodies.size(), 0.)
     {
       for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -26,6 +29,7 @@ namespace mpm
           enriched[b]    = bodies[b].prm.enriched_filter;
           write_back[b]  = !bodies[b].prm.filter_force_only;
           material[b]    = bodies[b].material.get();
+          n_history[b]   = material[b]->n_history();
           any_filtered   = any_filtered || is_filtered[b];
           metric[b] =
             bodies[b].prm.compliance_metric ? Metric::compliance : Metric::mass;
@@ -60,44 +64,78 @@ namespace mpm
         {
           if (samples.empty())
             return Result::unchanged;
-          // Cells of a uniform grid share J0: build the projection only when
-          // the geometry changes.
-          if (!projections[b] || !(J0 == last_J0[b]))
-            {
-              projections[b] = std::make_unique<AssumedStressProjection<dim>>(
-                J0, metric[b], compliance[b], enriched[b]);
-              last_J0[b] = J0;
-            }
+          use_geometry(J0, b);
           const Result result = projections[b]->project(samples, beta);
           if (result != Result::full)
             ++n_fallbacks;
           if (result == Result::unchanged || !write_back[b])
             return result;
-          // Write back; the material makes each stress consistent with its
-          // internal variables (plastic models return it to the yield surface).
-          using L               = ParticleLayout<dim>;
-          const auto &mat       = *material[b];
-          const auto  n_history = mat.n_history();
           for (unsigned int k = 0; k < samples.size(); ++k)
-            {
-              double     *prop = targets[k];
-              const auto &s    = samples[k].stress;
-              auto        full = load_stress(prop + L::stress);
-              // plane strain: keep the elastic out-of-plane strain
-              full[2][2] += out_of_plane_nu[b] *
-                            (s[0][0] - full[0][0] + s[dim - 1][dim - 1] -
-                             full[dim - 1][dim - 1]);
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = i; j < dim; ++j)
-                  full[i][j] = s[i][j];
-              if (n_history > 0)
-                mat.make_admissible(full,
-                                    ArrayView<double>(prop + L::history,
-                                                      n_history));
-              store_stress(full, prop + L::stress);
-            }
+            write_stress(b, targets[k], samples[k].stress);
           return result;
         }
+    }
+
+    template <int dim>
+    void
+    StressFilter<dim>::use_geometry(const Tensor<2, dim> &J0,
+                                    const unsigned int    b)
+    {
+      if constexpr (dim > 1)
+        // Cells of a uniform grid share J0: build the projection only when
+        // the geometry changes.
+        if (!projections[b] || !(J0 == last_J0[b]))
+          {
+            projections[b] = std::make_unique<AssumedStressProjection<dim>>(
+              J0, metric[b], compliance[b], enriched[b]);
+            last_J0[b] = J0;
+          }
+    }
+
+    template <int dim>
+    void
+    StressFilter<dim>::begin_cell(const Tensor<2, dim> &J0)
+    {
+      for (unsigned int b = 0; b < is_filtered.size(); ++b)
+        if (is_filtered[b])
+          {
+            use_geometry(J0, b);
+            sums[b].clear();
+          }
+    }
+
+    template <int dim>
+    void
+    StressFilter<dim>::write_stress(const unsigned int             b,
+                                    double                        *prop,
+                                    const SymmetricTensor<2, dim> &s) const
+    {
+      using L          = ParticleLayout<dim>;
+      double *const st = prop + L::stress; // Voigt xx yy zz yz xz xy
+      if (n_history[b] == 0 && dim == 2)
+        {
+          // plane strain: keep the elastic out-of-plane strain
+          st[2] += out_of_plane_nu[b] *
+                   (s[0][0] - st[0] + s[dim - 1][dim - 1] - st[1]);
+          st[0] = s[0][0];
+          st[1] = s[dim - 1][dim - 1];
+          st[5] = s[0][dim - 1];
+          return;
+        }
+      auto full = load_stress(st);
+      full[2][2] += out_of_plane_nu[b] * (s[0][0] - full[0][0] +
+                                          s[dim - 1][dim - 1] -
+                                          full[dim - 1][dim - 1]);
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          full[i][j] = s[i][j];
+      // The material makes the stress consistent with its internal
+      // variables (plastic models return it to the yield surface).
+      if (n_history[b] > 0)
+        material[b]->make_admissible(full,
+                                     ArrayView<double>(prop + L::history,
+                                                       n_history[b]));
+      store_stress(full, prop + L::stress);
     }
 
     template <int dim>

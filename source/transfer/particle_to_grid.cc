@@ -121,6 +121,7 @@ namespace mpm
             for (unsigned int b = 0; b < bodies.size(); ++b)
               domain_integration[b] =
                 Force::fills(cell_count[b], cell_volume[b], volume_of_cell);
+            filter->begin_cell(J0);
           }
 
         // Accumulate per cell, then scatter once.
@@ -155,6 +156,7 @@ namespace mpm
                                          current_domain<dim>(prop)) :
                           Tensor<2, dim>(),
                         V);
+                      filter->add_particle(b, xi, prop);
                       by_field = true;
                     }
                 Tensor<2, dim> sigma;
@@ -186,8 +188,9 @@ namespace mpm
                 }
           }
 
-        // Filtered bodies: project their stresses in this cell, then
-        // the force of the projected field.
+        // Filtered bodies: solve their projections in this cell (which
+        // writes the projected stresses back), then the force of the
+        // projected field.
         if constexpr (has_filter && with_filter)
           for (const unsigned int b : force_bodies)
             {
@@ -195,11 +198,12 @@ namespace mpm
                 beta[filters::AssumedStressProjection<3>::n_beta]; // the
                                                                    // largest
               double     f[nv * dim] = {};
-              const auto result      = filter->filter_cell(J0, pic, b, beta);
+              const auto result      = filter->finish_cell(pic, b, beta);
               if (result != filters::StressFilter<dim>::Result::unchanged)
                 field_force[b].add_internal_force(geo,
                                                   filter->projection(b),
                                                   beta,
+                                                  filter->cartesian_field(b),
                                                   f);
               else
                 // nothing to project onto: the particles' own stresses

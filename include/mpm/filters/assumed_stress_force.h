@@ -22,20 +22,25 @@ namespace mpm
      * the depth the bending stiffness falls to 1 - 1/n^2 of the exact one
      * (theory.md, section 4.8).
      *
-     * On an axis-parallel box, grad N and the Pian-Sumihara field are
-     * polynomials of degree at most 2 in each reference coordinate, so
-     * the integrand lies in the tensor-quadratic space spanned by the
-     * Lagrange polynomials l_k of the lattice {0, 1/2, 1}^dim. Hence
-     *   int sigma grad N_v = sum_k W_k sigma(x_k) grad N_v(x_k),
-     *   W_k = sum_p int_{Omega_p} l_k dV,
-     * exact for every particle layout. Each particle adds the averages
-     * of the l_k over its domain: products of the 1D averages
-     * l(c) + l'' a^2/6 over the domain's extent a in each direction
-     * (a^2 = the domain's second moment, exact for axis-parallel domains;
-     * the correlation of a sheared domain is neglected). The force is
-     * then linear in the weights and in beta: on boxes a sparse operator
-     * cached per cell size, on other cells the integrand evaluated at the
-     * lattice points (a consistent quadrature of the smooth integrand).
+     * Each particle's domain is taken as a product measure: uniform over
+     * [c_d - a_d, c_d + a_d] in each reference direction d, with a_d^2 the
+     * domain's second moment (exact for axis-parallel domains; the
+     * correlation of a sheared domain is neglected). The integrand is at
+     * most tensor-quadratic in the natural coordinates r = 2 xi - 1, so
+     * the cell needs only the moments
+     *   M_ab(c) = sum_p V_p E_p[r_0^a] E_p[r_1^b] (E_p[r_2^c]),
+     * a, b, c in {0, 1, 2}, with E_p[r] = r_c and E_p[r^2] = r_c^2 +
+     * (2 a_d)^2 / 3: one outer product of two (three) 3-vectors per
+     * particle. From them:
+     * - 2D boxes: the force in closed form (theory.md 4.8): grad N is
+     *   linear and the field is linear in r, so only M_00, M_10, M_01,
+     *   M_20, M_02, M_11 enter;
+     * - other cells and 3D: the weights of the lattice {-1, 0, 1}^dim,
+     *   W_k = integral of its Lagrange polynomial l_k, so that
+     *     int sigma grad N_v = sum_k W_k sigma(x_k) grad N_v(x_k),
+     *   on 3D boxes through a sparse operator cached per cell size, on
+     *   other cells evaluated at the lattice points (a consistent
+     *   quadrature of the smooth integrand).
      * Only in cells the particles fill (fills()): in sparse cells the
      * second moments are large against the particles' spread, the force
      * departs from the particle quadrature of the projection and nearly
@@ -84,8 +89,18 @@ namespace mpm
                          const double                       *beta,
                          double                             *force) const;
 
+      /// The same with the field's monomial coefficients already known
+      /// (AssumedStressProjection::cartesian_field(beta)).
+      void
+      add_internal_force(
+        const shape_functions::Q1Cell<dim>                         &geo,
+        const AssumedStressProjection<dim>                         &field,
+        const double                                               *beta,
+        const typename AssumedStressProjection<dim>::CartesianField &sigma,
+        double                                                     *force) const;
+
     private:
-      /// The force operator of a box: f[vd] += c W[k] beta[b].
+      /// The force operator of a 3D box: f[vd] += c W[k] beta[b].
       struct Term
       {
         unsigned short kb; ///< k * (field size) + b: index into weight x beta
@@ -96,11 +111,57 @@ namespace mpm
       build_box_operator(const shape_functions::Q1Cell<dim> &geo,
                          const AssumedStressProjection<dim> &field) const;
 
-      double weight[n_points];
+      /// The lattice weights W_k from the moments.
+      void
+      lattice_weights(double *weight) const;
+
+      /// M_abc at index a + 3 b + 9 c.
+      double moment[n_points];
       bool   any = false;
 
       mutable std::vector<Term>      box_operator;
       mutable dealii::Tensor<1, dim> box_extent;
     };
+
+    template <int dim>
+    inline void
+    AssumedStressForce<dim>::add_particle(const dealii::Point<dim>     &xi,
+                                          const dealii::Tensor<2, dim> &q,
+                                          const double                  V)
+    {
+      any = true;
+      // E[1], E[r], E[r^2] of the domain in each natural direction; its
+      // half-width in r is twice the one in xi.
+      double e[dim][3];
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          double a2 = 0;
+          for (unsigned int k = 0; k < dim; ++k)
+            a2 += q[d][k] * q[d][k];
+          const double r = 2 * xi[d] - 1;
+          e[d][0]        = 1;
+          e[d][1]        = r;
+          e[d][2]        = r * r + 4 * a2 / 3;
+        }
+      if constexpr (dim == 2)
+        {
+          for (unsigned int j = 0; j < 3; ++j)
+            {
+              const double vj = V * e[1][j];
+              for (unsigned int i = 0; i < 3; ++i)
+                moment[i + 3 * j] += vj * e[0][i];
+            }
+        }
+      else
+        {
+          for (unsigned int m = 0; m < 3; ++m)
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                const double vjm = V * e[1][j] * e[2][m];
+                for (unsigned int i = 0; i < 3; ++i)
+                  moment[i + 3 * j + 9 * m] += vjm * e[0][i];
+              }
+        }
+    }
   } // namespace filters
 } // namespace mpm

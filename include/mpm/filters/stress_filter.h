@@ -97,6 +97,50 @@ namespace mpm
                   const unsigned int            b,
                   double                       *beta);
 
+      /**
+       * The same projection fused into a particle loop: begin_cell() for
+       * a cell whose Jacobian at its centre is @p J0, add_particle() for
+       * each particle of a filtered body (properties @p prop), then
+       * finish_cell() per filtered body: it solves, writes the projected
+       * stresses back (unless force only) and returns what filter_cell()
+       * would have.
+       */
+      void
+      begin_cell(const dealii::Tensor<2, dim> &J0);
+      void
+      add_particle(const unsigned int        b,
+                   const dealii::Point<dim> &xi,
+                   const double             *prop)
+      {
+        if constexpr (dim > 1)
+          {
+            using L         = ParticleLayout<dim>;
+            const auto full = load_stress(prop + L::stress);
+            dealii::SymmetricTensor<2, dim> s;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                s[i][j] = full[i][j];
+            projections[b]->add(sums[b],
+                                xi,
+                                metric[b] == Metric::mass ? prop[L::mass] :
+                                                            prop[L::volume],
+                                s);
+          }
+      }
+      template <typename ParticleRange>
+      Result
+      finish_cell(const ParticleRange &particles_in_cell,
+                  const unsigned int   b,
+                  double              *beta);
+
+      /// The monomial coefficients of body b's field of the last
+      /// finish_cell() (valid unless it returned unchanged).
+      const typename AssumedStressProjection<dim>::CartesianField &
+      cartesian_field(const unsigned int b) const
+      {
+        return fields[b];
+      }
+
       /// The projection (and field) filter_cell() last used for body b.
       const AssumedStressProjection<dim> &
       projection(const unsigned int b) const
@@ -118,6 +162,17 @@ namespace mpm
               const unsigned int            b,
               double                       *beta);
 
+      /// Make projections[b] the projection of a cell with Jacobian J0.
+      void
+      use_geometry(const dealii::Tensor<2, dim> &J0, const unsigned int b);
+
+      /// Replace the in-plane stress of the particle @p prop of body @p b
+      /// by @p s (the material makes it admissible).
+      void
+      write_stress(const unsigned int                     b,
+                   double                                *prop,
+                   const dealii::SymmetricTensor<2, dim> &s) const;
+
       std::vector<char>                                          is_filtered;
       bool                                                       any_filtered;
       std::vector<Metric>                                        metric;
@@ -127,8 +182,13 @@ namespace mpm
       std::vector<char> write_back; ///< not Filtered stress = force only
       std::vector<dealii::Tensor<2, dim>>      last_J0;
       std::vector<StressSample<dim>>           samples;
+      /// The fused projection's sums of the current cell, per body.
+      std::vector<typename AssumedStressProjection<dim>::Moments> sums;
+      std::vector<typename AssumedStressProjection<dim>::CartesianField>
+        fields; ///< of the last finish_cell(), per body
       std::vector<double *>                    targets;
       std::vector<const materials::Material *> material;
+      std::vector<unsigned int>                n_history; ///< per body
       /// Poisson's ratio for the out-of-plane stress of plane strain, or
       /// 0 (plane stress, 3D, or no elastic moduli).
       std::vector<double> out_of_plane_nu;
@@ -162,6 +222,39 @@ namespace mpm
           targets.push_back(prop);
         }
       return project(J0, b, beta);
+    }
+
+    template <int dim>
+    template <typename ParticleRange>
+    typename StressFilter<dim>::Result
+    StressFilter<dim>::finish_cell(const ParticleRange &particles_in_cell,
+                                   const unsigned int   b,
+                                   double              *beta)
+    {
+      if constexpr (dim == 1)
+        {
+          (void)particles_in_cell, (void)b, (void)beta;
+          return Result::unchanged;
+        }
+      else
+        {
+          using L             = ParticleLayout<dim>;
+          const Result result = projections[b]->solve(sums[b], beta);
+          if (result != Result::full)
+            ++n_fallbacks;
+          if (result == Result::unchanged)
+            return result;
+          const auto &sigma = fields[b] = projections[b]->cartesian_field(beta);
+          if (!write_back[b])
+            return result;
+          for (auto &p : particles_in_cell)
+            {
+              double *prop = p.get_properties().data();
+              if (static_cast<unsigned int>(prop[L::body]) == b)
+                write_stress(b, prop, sigma.value(p.get_reference_location()));
+            }
+          return result;
+        }
     }
   } // namespace filters
 } // namespace mpm
