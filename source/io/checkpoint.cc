@@ -201,10 +201,13 @@ namespace mpm
     {
       std::ostringstream name;
       name << "step-" << std::setw(8) << std::setfill('0') << step;
-      const std::string folder = root(output_directory) + "/" + name.str();
-      if (folder == latest(output_directory))
-        throw std::runtime_error("the checkpoint '" + folder +
-                                 "' exists already");
+      std::string folder = root(output_directory) + "/" + name.str();
+      // A run started anew (Resume computation = false) over the
+      // checkpoints of an earlier one may reach a step whose folder is the
+      // latest complete checkpoint: that one stays until the new one is
+      // complete, so the new one gets another name.
+      while (folder == latest(output_directory))
+        folder += "-new";
       fs::remove_all(folder);
       fs::create_directories(folder);
       return folder;
