@@ -24,6 +24,9 @@ namespace
     "  --validate FILE.prm        read and set up the case (grid, bodies,\n"
     "                             particles, stability check), then stop\n"
     "                             without writing anything\n"
+    "  --resume FILE.prm          continue from the latest checkpoint in\n"
+    "                             the output directory (sets Checkpointing/\n"
+    "                             Resume computation = true)\n"
     "  --print-parameters [DIM]   print every parameter with its default\n"
     "                             and documentation (DIM = 1, 2 or 3;\n"
     "                             default 2), in parameter-file syntax\n"
@@ -32,11 +35,20 @@ namespace
 
   template <int dim>
   void
-  run(const std::string &file, const unsigned int n_bodies, const bool validate)
+  run(const std::string &file,
+      const unsigned int n_bodies,
+      const bool         validate,
+      const bool         resume)
   {
     dealii::ParameterHandler prm;
     mpm::Parameters::AllParameters<dim>::declare_parameters(prm, n_bodies);
     mpm::Parameters::parse_file(prm, file);
+    if (resume)
+      {
+        prm.enter_subsection("Checkpointing");
+        prm.set("Resume computation", "true");
+        prm.leave_subsection();
+      }
     mpm::Parameters::AllParameters<dim> parameters;
     parameters.file_name = file;
     parameters.parse_parameters(prm);
@@ -87,6 +99,7 @@ main(int argc, char **argv)
 
   std::string file;
   bool        validate = false;
+  bool        resume   = false;
   for (int i = 1; i < argc; ++i)
     {
       const std::string a = argv[i];
@@ -112,6 +125,8 @@ main(int argc, char **argv)
         }
       else if (a == "--validate")
         validate = true;
+      else if (a == "--resume")
+        resume = true;
       else if (!a.empty() && a[0] == '-')
         {
           if (root)
@@ -140,13 +155,13 @@ main(int argc, char **argv)
       switch (pre.dimension)
         {
           case 1:
-            run<1>(file, pre.n_bodies, validate);
+            run<1>(file, pre.n_bodies, validate, resume);
             break;
           case 2:
-            run<2>(file, pre.n_bodies, validate);
+            run<2>(file, pre.n_bodies, validate, resume);
             break;
           default:
-            run<3>(file, pre.n_bodies, validate);
+            run<3>(file, pre.n_bodies, validate, resume);
         }
     }
   catch (const mpm::InputError &e)

@@ -38,13 +38,15 @@ namespace mpm
   template <int dim>
   void
   BackgroundGrid<dim>::create(const Parameters::Grid<dim> &prm,
-                              const std::string           &input_folder)
+                              const std::string           &input_folder,
+                              const bool                   coarse_only)
   {
     if (prm.type == Parameters::Grid<dim>::Type::hyper_rectangle)
-      create_box_mesh(*tria, prm.subdivisions, prm.lower, prm.upper);
+      create_box_mesh(
+        *tria, prm.subdivisions, prm.lower, prm.upper, !coarse_only);
     else
       read_mesh(*tria, prm.mesh_file, input_folder, "Grid/Mesh file");
-    if (prm.global_refinements > 0)
+    if (prm.global_refinements > 0 && !coarse_only)
       tria->refine_global(prm.global_refinements);
   }
 

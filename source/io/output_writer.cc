@@ -45,6 +45,33 @@ namespace mpm
 
   template <int dim>
   void
+  OutputWriter<dim>::restore(
+    const unsigned int                                 n,
+    const std::vector<std::pair<double, std::string>> &particles,
+    const std::vector<std::pair<double, std::string>> &grid)
+  {
+    n_outputs        = n;
+    particle_records = particles;
+    grid_records     = grid;
+  }
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_series() const
+  {
+    for (const auto &[records, name] :
+         {std::make_pair(&particle_records, "particles.pvd"),
+          std::make_pair(&grid_records, "grid.pvd")})
+      if (!records->empty())
+        {
+          std::ostringstream pvd;
+          DataOutBase::write_pvd_record(pvd, *records);
+          write_file_atomically(directory + "/" + name, pvd.str());
+        }
+  }
+
+  template <int dim>
+  void
   OutputWriter<dim>::write_particles_vtu(
     Particles::ParticleHandler<dim> &particles,
     const double                     time)

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
 #include <mpm/particles/particle_layout.h>
 
@@ -114,6 +115,18 @@ namespace mpm
         first = false;
       }
     out << '\n' << std::flush;
+    if (!out)
+      throw std::runtime_error("cannot write the statistics file '" +
+                               file_name + "'");
+  }
+
+  template <int dim>
+  void
+  StatisticsFile<dim>::resume(const std::string &file_name,
+                              const std::string &content)
+  {
+    write_file_atomically(file_name, content);
+    out.open(file_name, std::ios::app);
     if (!out)
       throw std::runtime_error("cannot write the statistics file '" +
                                file_name + "'");

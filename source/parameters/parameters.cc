@@ -609,6 +609,51 @@ namespace mpm
         throw InputError("Output/Directory must not be empty");
     }
 
+    void
+    Checkpointing::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpointing");
+      prm.declare_entry("Steps between checkpoints",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write a checkpoint after every step whose number is "
+                        "a multiple of this (0: not by step count). The "
+                        "checkpoint is kept in Output/Directory/checkpoint/; "
+                        "only the latest complete one is kept.");
+      prm.declare_entry("Wall time between checkpoints",
+                        "0",
+                        Patterns::Double(0),
+                        "Also write a checkpoint when this many wall-clock "
+                        "seconds have passed since the last one (or the "
+                        "start; 0: not by wall-clock time).");
+      prm.declare_entry("Resume computation",
+                        "false",
+                        Patterns::Selection("false|true|auto"),
+                        "true: continue from the latest checkpoint in "
+                        "Output/Directory/checkpoint/ (an input error if "
+                        "there is none); auto: continue if there is one, "
+                        "else start from the initial state; false: start "
+                        "from the initial state. The command-line option "
+                        "--resume sets true. A restart refuses parameters "
+                        "that differ from the checkpoint's, except Output, "
+                        "Checkpointing, Time stepping/End time and Maximum "
+                        "number of steps.");
+      prm.leave_subsection();
+    }
+
+    void
+    Checkpointing::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpointing");
+      steps_between       = prm.get_integer("Steps between checkpoints");
+      wall_seconds        = prm.get_double("Wall time between checkpoints");
+      const std::string r = prm.get("Resume computation");
+      resume              = r == "true" ? Resume::yes :
+                            r == "auto" ? Resume::automatic :
+                                          Resume::no;
+      prm.leave_subsection();
+    }
+
     // ------------------------------------------------------------- preamble
     void
     declare_preamble(ParameterHandler &prm)
@@ -781,6 +826,7 @@ namespace mpm
       BoundaryConditions::declare_parameters(prm);
       ShapeFunctions::declare_parameters(prm);
       Output::declare_parameters(prm);
+      Checkpointing::declare_parameters(prm);
       prm.enter_subsection("Bodies");
       for (unsigned int i = 0; i < n_bodies; ++i)
         {
@@ -830,6 +876,7 @@ namespace mpm
       boundary.parse_parameters(prm);
       shape_functions.parse_parameters(prm);
       output.parse_parameters(prm);
+      checkpointing.parse_parameters(prm);
       bodies.resize(n_bodies);
       const ConstantsScope scope(constants);
       prm.enter_subsection("Bodies");

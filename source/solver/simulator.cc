@@ -56,11 +56,19 @@ namespace mpm
   Simulator<dim>::setup()
   {
     TimerOutput::Scope t(timer, "setup");
-    background.create(params.grid, input_folder);
-    background.setup(params.boundary);
-    create_bodies();
-    check_shape_functions();
-    create_particles();
+    const std::string  folder = find_checkpoint();
+    if (!folder.empty())
+      resume_from(folder);
+    else
+      {
+        background.create(params.grid, input_folder);
+        grid_fingerprint =
+          checkpoint::coarse_mesh_fingerprint(background.triangulation());
+        background.setup(params.boundary);
+        create_bodies();
+        check_shape_functions();
+        create_particles();
+      }
     stress_filter = std::make_unique<filters::StressFilter<dim>>(bodies);
     if (params.shape_functions.family != shape_functions::Family::standard)
       domain_functions =
@@ -81,6 +89,16 @@ namespace mpm
         }
     benchmark =
       benchmarks::create_benchmark<dim>(params.benchmark, params.constants);
+    if (resumed())
+      {
+        // The state the checkpoint was written in: the fixed step was
+        // checked against the initial state when the run started.
+        min_nodal_mass = resume_state.min_nodal_mass;
+        stable_dt      = resume_state.stable_dt;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          stress_filter->n_fallbacks = resume_state.n_filter_fallbacks;
+        return;
+      }
 
     // Nodes lighter than this carry no velocity (a relative threshold:
     // far below any real nodal mass, far above round-off).
@@ -291,7 +309,7 @@ namespace mpm
 
   template <int dim>
   void
-  Simulator<dim>::create_particles()
+  Simulator<dim>::initialize_particle_handler()
   {
     using L = ParticleLayout<dim>;
     particle_handler.initialize(background.triangulation(),
@@ -308,7 +326,13 @@ namespace mpm
           << current_step + 1 << ", position (" << p->get_location() << ")";
         lost_messages.push_back(s.str());
       });
+  }
 
+  template <int dim>
+  void
+  Simulator<dim>::create_particles()
+  {
+    initialize_particle_handler();
     types::particle_index id_offset = 0;
     for (const auto &body : bodies)
       {
@@ -653,21 +677,6 @@ namespace mpm
   }
 
   template <int dim>
-  template <typename Error>
-  void
-  Simulator<dim>::throw_if_any(const std::string &prefix,
-                               const std::string &local_problem)
-  {
-    const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int first =
-      Utilities::MPI::min(local_problem.empty() ? nranks : rank, comm);
-    if (first < nranks)
-      throw Error(prefix +
-                  Utilities::MPI::broadcast(comm, local_problem, first));
-  }
-
-  template <int dim>
   void
   Simulator<dim>::check_errors()
   {
@@ -732,9 +741,16 @@ namespace mpm
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       try
         {
-          statistics_file->open(out.directory + "/statistics.txt",
-                                benchmark ? benchmark->columns() :
-                                            std::vector<std::string>());
+          // A restart continues the statistics file of the checkpoint: the
+          // rows written after it (by the interrupted run) are dropped.
+          if (resumed())
+            statistics_file->resume(out.directory + "/statistics.txt",
+                                    checkpoint::read_file(resume_folder +
+                                                          "/statistics.txt"));
+          else
+            statistics_file->open(out.directory + "/statistics.txt",
+                                  benchmark ? benchmark->columns() :
+                                              std::vector<std::string>());
           // Every entry of this run (defaults included, no comments), so
           // that scripts/recompute_measures.py finds the benchmark, its
           // constants and the grid beside the output.
@@ -747,19 +763,46 @@ namespace mpm
         }
     throw_if_any<InputError>("", problem);
 
-    // The first output has no grid fields yet: fill them from the state.
-    particle_to_grid(transfer::P2GContent::mass_momentum);
-    nodal_velocity(background,
-                   p2g,
-                   p2g,
-                   transfer::P2GLayout<dim>::n_components,
-                   transfer::P2GLayout<dim>::momentum,
-                   min_nodal_mass,
-                   kinematics);
-    write_output();
-    next_output_time = out.interval;
+    if (resumed())
+      {
+        // The outputs up to the checkpoint are on disk already; the
+        // ParaView series are rewritten without those of the interrupted
+        // run after it.
+        const auto &s    = resume_state;
+        next_output_time = s.next_output_time;
+        last_output_step = s.last_output_step;
+        summary_rows     = s.summary_rows;
+        writer->restore(s.n_outputs, s.particle_records, s.grid_records);
+        problem.clear();
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          try
+            {
+              writer->write_series();
+            }
+          catch (const std::exception &e)
+            {
+              problem = e.what();
+            }
+        throw_if_any<RuntimeError>("", problem);
+      }
+    else
+      {
+        // The first output has no grid fields yet: fill them from the
+        // state.
+        particle_to_grid(transfer::P2GContent::mass_momentum);
+        nodal_velocity(background,
+                       p2g,
+                       p2g,
+                       transfer::P2GLayout<dim>::n_components,
+                       transfer::P2GLayout<dim>::momentum,
+                       min_nodal_mass,
+                       kinematics);
+        write_output();
+        next_output_time = out.interval;
+      }
 
     wall_start = last_progress        = wall_seconds();
+    last_checkpoint_wall              = wall_start;
     double             output_seconds = 0;
     const unsigned int first_step     = current_step;
     const double       end            = params.time.end_time;
@@ -785,6 +828,12 @@ namespace mpm
                 out.interval *
                   (std::floor(current_time / out.interval + 1e-9) + 1) :
                 current_time;
+          }
+        if (checkpoint_due())
+          {
+            const double before = wall_seconds();
+            write_checkpoint();
+            output_seconds += wall_seconds() - before;
           }
         print_progress(false);
       }
@@ -963,6 +1012,9 @@ namespace mpm
           << " (stability limit now " << stable_time_step() << ")\n"
           << "  output: " << p.output.directory << "/ every "
           << p.output.interval << " s" << std::endl;
+    if (resumed())
+      pcout << "  resumed from the checkpoint " << resume_folder << " at step "
+            << current_step << ", t = " << current_time << std::endl;
   }
 
   template <int dim>

@@ -6,16 +6,25 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 rm -rf "$work" && mkdir -p "$work/results" && cd "$work" || exit 1
 echo "results of an earlier run" > results/sentinel.txt
-snapshot() { (cd results && ls -l --time-style=full-iso . && md5sum *) | md5sum; }
-before=$(snapshot)
+# every file and folder below results/, with times and contents
+snapshot() { (cd results && ls -lR --time-style=full-iso . &&
+              find . -type f -print0 | sort -z | xargs -0 md5sum) | md5sum; }
 
 if [ -f "$case" ]; then
   status=$(sed -n 's/^# STATUS: *//p' "$case" | head -1)
   expect=$(sed -n 's/^# EXPECT: *//p' "$case" | head -1)
+  before_run=$(sed -n 's/^# BEFORE: *//p' "$case" | head -1)
   [ -n "$(sed -n 's/^# COPY-TO-RESULTS//p' "$case")" ] && keep=1 || keep=0
 else
-  status=1 expect="Cannot open the parameter file" keep=0
+  status=1 expect="Cannot open the parameter file" keep=0 before_run=
 fi
+# `# BEFORE: FILE` (next to the case): a run that must succeed first, e.g.
+# one that leaves the checkpoint a restart is then tried from
+if [ -n "$before_run" ]; then
+  "$mpm" "$(dirname "$case")/$before_run" > before.txt 2>&1 \
+    || { echo "FAIL: the run before the case failed"; cat before.txt; exit 1; }
+fi
+before=$(snapshot)
 
 if [ "$np" -gt 1 ]; then
   # under MPI every rank must stop: a hang is a failure (timeout)

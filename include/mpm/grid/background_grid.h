@@ -37,9 +37,12 @@ namespace mpm
     explicit BackgroundGrid(const MPI_Comm comm);
 
     /// Build the triangulation; mesh paths are tried relative to
-    /// @p input_folder first. Throws InputError on bad input.
+    /// @p input_folder first. Throws InputError on bad input. With
+    /// @p coarse_only, no refinement (for loading a checkpoint into it).
     void
-    create(const Parameters::Grid<dim> &prm, const std::string &input_folder);
+    create(const Parameters::Grid<dim> &prm,
+           const std::string           &input_folder,
+           const bool                   coarse_only = false);
 
     /// Distribute nodes, cache cell geometry and node constraints.
     void

@@ -14,11 +14,14 @@ namespace mpm
    * cells, but p4est and deal.II store far fewer coarse cells (a coarse
    * cell costs about 800 bytes, a refined one a fraction of that), and
    * set-up is faster. Boundary ids: 0/1 x min/max, 2/3 y, 4/5 z.
+   * With @p refine = false only the coarse box is built (a restart loads
+   * the refinement from its checkpoint).
    */
   template <int dim>
   void
   create_box_mesh(dealii::Triangulation<dim>      &tria,
                   const std::vector<unsigned int> &cells_per_direction,
                   const dealii::Point<dim>        &lower,
-                  const dealii::Point<dim>        &upper);
+                  const dealii::Point<dim>        &upper,
+                  const bool                       refine = true);
 } // namespace mpm

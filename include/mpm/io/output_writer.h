@@ -53,6 +53,29 @@ namespace mpm
       ++n_outputs;
     }
 
+    /// The ParaView series so far: (time, .pvtu file) of every output.
+    const std::vector<std::pair<double, std::string>> &
+    particle_series() const
+    {
+      return particle_records;
+    }
+    const std::vector<std::pair<double, std::string>> &
+    grid_series() const
+    {
+      return grid_records;
+    }
+
+    /// Continue after the outputs of a checkpoint.
+    void
+    restore(const unsigned int                                 n_outputs,
+            const std::vector<std::pair<double, std::string>> &particles,
+            const std::vector<std::pair<double, std::string>> &grid);
+
+    /// Rewrite particles.pvd and grid.pvd (those that have records) from
+    /// the records. Rank 0.
+    void
+    write_series() const;
+
   private:
     MPI_Comm                                    comm;
     std::string                                 directory;

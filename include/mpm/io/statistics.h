@@ -43,6 +43,11 @@ namespace mpm
     open(const std::string              &file_name,
          const std::vector<std::string> &extra_columns);
 
+    /// Continue a run: replace the file by @p content (the file as it was
+    /// at a checkpoint, header included) and append to it.
+    void
+    resume(const std::string &file_name, const std::string &content);
+
     void
     write_row(const double                 time,
               const unsigned int           step,

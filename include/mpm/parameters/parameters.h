@@ -158,6 +158,31 @@ namespace mpm
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
+    /// Periodic checkpoints and resuming from them (doc/checkpointing.md).
+    struct Checkpointing
+    {
+      enum class Resume
+      {
+        no,       ///< start from the initial state
+        yes,      ///< continue from the latest checkpoint; refuse if none
+        automatic ///< continue if a checkpoint exists, else start
+      };
+      unsigned int steps_between = 0; ///< 0: not by step count
+      double       wall_seconds  = 0; ///< 0: not by wall-clock time
+      Resume       resume        = Resume::no;
+
+      bool
+      enabled() const
+      {
+        return steps_between > 0 || wall_seconds > 0;
+      }
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
     /// Everything in one place, read from one file.
     template <int dim>
     struct AllParameters
@@ -171,6 +196,7 @@ namespace mpm
       ShapeFunctions         shape_functions;
       std::vector<Body<dim>> bodies;
       Output                 output;
+      Checkpointing          checkpointing;
       std::string            benchmark = "none";
       std::map<std::string, double> constants;
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/particles/particle_handler.h>
@@ -9,6 +10,7 @@
 #include <mpm/filters/convection_correction.h>
 #include <mpm/filters/stress_filter.h>
 #include <mpm/grid/background_grid.h>
+#include <mpm/io/checkpoint.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
 #include <mpm/parameters/parameters.h>
@@ -105,6 +107,18 @@ namespace mpm
       return bodies;
     }
 
+    /// Whether setup() continued from a checkpoint.
+    bool
+    resumed() const
+    {
+      return !resume_folder.empty();
+    }
+
+    /// Write a checkpoint of the current state (doc/checkpointing.md).
+    /// Collective.
+    void
+    write_checkpoint();
+
   private:
     // The phases of one step.
     void
@@ -125,6 +139,21 @@ namespace mpm
     create_bodies();
     void
     create_particles();
+    /// Attach the handler to the grid; count the particles that leave it.
+    void
+    initialize_particle_handler();
+
+    // Checkpoint and restart (checkpoint_restart.cc).
+    /// The checkpoint folder to resume from, or "" to start anew.
+    std::string
+    find_checkpoint();
+    /// Grid, particles and solver state from the checkpoint in @p folder,
+    /// after checking that the parameters have not changed.
+    void
+    resume_from(const std::string &folder);
+    /// Whether a checkpoint is due after the step just taken. Collective.
+    bool
+    checkpoint_due();
     /// The family's layout needs and its checks against grid and remedies.
     void
     check_shape_functions();
@@ -194,5 +223,29 @@ namespace mpm
     filters::ConvectionCorrection<dim> convection_correction;
     bool                               any_convection_correction = false;
     double                             wall_start = 0, last_progress = 0;
+
+    /// Hash of the coarse mesh, stored in checkpoints.
+    std::string grid_fingerprint;
+    /// The checkpoint this run continues from ("" for a fresh start), and
+    /// its solver state.
+    std::string             resume_folder;
+    checkpoint::SolverState resume_state;
+    double                  last_checkpoint_wall  = 0;
+    unsigned int            n_checkpoints_written = 0;
   };
+
+  template <int dim>
+  template <typename Error>
+  void
+  Simulator<dim>::throw_if_any(const std::string &prefix,
+                               const std::string &local_problem)
+  {
+    const unsigned int rank   = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int nranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int first =
+      dealii::Utilities::MPI::min(local_problem.empty() ? nranks : rank, comm);
+    if (first < nranks)
+      throw Error(
+        prefix + dealii::Utilities::MPI::broadcast(comm, local_problem, first));
+  }
 } // namespace mpm
