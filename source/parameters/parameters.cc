@@ -781,6 +781,7 @@ namespace mpm
       BoundaryConditions::declare_parameters(prm);
       ShapeFunctions::declare_parameters(prm);
       Output::declare_parameters(prm);
+      LoadBalancing::declare_parameters(prm);
       prm.enter_subsection("Bodies");
       for (unsigned int i = 0; i < n_bodies; ++i)
         {
@@ -830,6 +831,7 @@ namespace mpm
       boundary.parse_parameters(prm);
       shape_functions.parse_parameters(prm);
       output.parse_parameters(prm);
+      load_balancing.parse_parameters(prm);
       bodies.resize(n_bodies);
       const ConstantsScope scope(constants);
       prm.enter_subsection("Bodies");

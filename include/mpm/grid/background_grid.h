@@ -41,7 +41,8 @@ namespace mpm
     void
     create(const Parameters::Grid<dim> &prm, const std::string &input_folder);
 
-    /// Distribute nodes, cache cell geometry and node constraints.
+    /// Distribute nodes, cache cell geometry and node constraints. Called
+    /// again after a repartition: rebuilds everything of the partition.
     void
     setup(const Parameters::BoundaryConditions &bc);
 
