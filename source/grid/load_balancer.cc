@@ -116,6 +116,20 @@ namespace mpm
   }
 
   template <int dim>
+  double
+  LoadBalancer<dim>::weight_imbalance() const
+  {
+    unsigned long long local = 0;
+    for (const auto &cell : grid.triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        local += weight(particles.n_particles_in_cell(cell));
+    const MPI_Comm comm = grid.triangulation().get_communicator();
+    const double   mean = Utilities::MPI::sum(local, comm) /
+                        double(Utilities::MPI::n_mpi_processes(comm));
+    return mean > 0 ? Utilities::MPI::max(local, comm) / mean : 1.;
+  }
+
+  template <int dim>
   ParticleBalance
   LoadBalancer<dim>::balance(const Particles::ParticleHandler<dim> &particles,
                              const MPI_Comm                         comm)

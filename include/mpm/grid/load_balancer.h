@@ -52,12 +52,23 @@ namespace mpm
     LoadBalancer &
     operator=(const LoadBalancer &) = delete;
 
-    /// Whether the step with this number starts with a repartition.
+    /**
+     * Whether the step with this number starts with a repartition: every
+     * `Repartition interval` steps, if the weights are out of balance by
+     * more than 5% (largest rank over the mean). A repartition rebuilds
+     * the whole triangulation from p4est's forest, which costs several
+     * steps, so a balanced partition is kept. Collective at those steps.
+     */
     bool
     due(const unsigned int step) const
     {
-      return prm.interval > 0 && step > 0 && step % prm.interval == 0;
+      return prm.interval > 0 && step > 0 && step % prm.interval == 0 &&
+             weight_imbalance() > 1.05;
     }
+
+    /// Largest rank's weight over the mean. Collective.
+    double
+    weight_imbalance() const;
 
     /// Repartition by weight, move the particles, rebuild the grid's
     /// nodes with the boundary conditions @p bc. Collective.
