@@ -4,7 +4,10 @@
 # Usage: scripts/throughput.sh [cells] [variant] [ranks]
 #   cells:   cells inside the block per direction (256 or 512)
 #   variant: standard (default), filter (assumed-stress filter, mass
-#            metric), theta-bar, uGIMP, cpGIMP, CPDI, CPDI2
+#            metric), theta-bar, uGIMP, cpGIMP, CPDI, CPDI2; corner: the
+#            block in one corner of a grid [-0.25, 2.25]^2 (unbalanced:
+#            p4est's equal cell counts give most particles to one rank);
+#            corner-balanced: the same with Load balancing every 50 steps
 #   ranks:   the rank counts to run, e.g. "1" or "1 2" (default)
 # Run it on an otherwise idle machine.
 set -euo pipefail
@@ -13,9 +16,11 @@ cells=${1:-256}
 variant=${2:-standard}
 ranks=${3:-1 2}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-family=standard remedy=""
+family=standard remedy="" upper=1.25 grid=$((cells * 3 / 2)) interval=0
 case "$variant" in
   standard) ;;
+  corner) upper=2.25 grid=$((cells * 5 / 2)) ;;
+  corner-balanced) upper=2.25 grid=$((cells * 5 / 2)) interval=50 ;;
   filter) remedy="set Stress filter = assumed stress" ;;
   theta-bar) remedy="set Volumetric smoothing = cell" ;;
   uGIMP|cpGIMP|CPDI|CPDI2) family=$variant ;;
@@ -25,7 +30,11 @@ work=$(mktemp -d)
 cat > "$work/case.prm" <<PRM
 include $root/prm/throughput_2d.prm
 subsection Grid
-  set Subdivisions = $((cells * 3 / 2))
+  set Upper corner = $upper, $upper
+  set Subdivisions = $grid
+end
+subsection Load balancing
+  set Repartition interval (steps) = $interval
 end
 subsection Shape functions
   set Family = $family
@@ -43,6 +52,6 @@ cd "$work"
 for np in $ranks; do
   mpirun -np $np "$root/build/mpm" case.prm > log.$np
   echo "$variant, ranks $np, ${cells}^2 block: $(sed -n 's/^  particles: //p' log.$np) particles"
-  grep -E "time loop:|memory:" log.$np
+  grep -E "time loop:|memory:|load balancing:" log.$np
 done
 rm -rf "$work"

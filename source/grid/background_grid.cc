@@ -130,10 +130,16 @@ namespace mpm
           }
       }
     cartesian = Utilities::MPI::min(all_boxes ? 1 : 0, comm) == 1;
-    if (cartesian)
-      mapping_ptr = std::make_unique<MappingCartesian<dim>>();
-    else
-      mapping_ptr = std::make_unique<MappingQ1<dim>>();
+    // After a repartition (setup() again) the mapping stays: the particle
+    // handler holds it, and the union of owned and ghost cells over the
+    // ranks is still the whole grid, so the choice is the same.
+    if (!mapping_ptr)
+      {
+        if (cartesian)
+          mapping_ptr = std::make_unique<MappingCartesian<dim>>();
+        else
+          mapping_ptr = std::make_unique<MappingQ1<dim>>();
+      }
 
     // Node constraints from boundary faces of owned and ghost cells: every
     // owned node sees all its adjacent cells there.

@@ -255,6 +255,7 @@ namespace mpm
         return path.compare(0, prefix.size(), prefix) == 0;
       };
       return !(starts("Output/") || starts("Checkpointing/") ||
+               starts("Load balancing/") ||
                path == "Time stepping/End time" ||
                path == "Time stepping/Maximum number of steps");
     }

@@ -827,6 +827,7 @@ namespace mpm
       ShapeFunctions::declare_parameters(prm);
       Output::declare_parameters(prm);
       Checkpointing::declare_parameters(prm);
+      LoadBalancing::declare_parameters(prm);
       prm.enter_subsection("Bodies");
       for (unsigned int i = 0; i < n_bodies; ++i)
         {
@@ -877,6 +878,7 @@ namespace mpm
       shape_functions.parse_parameters(prm);
       output.parse_parameters(prm);
       checkpointing.parse_parameters(prm);
+      load_balancing.parse_parameters(prm);
       bodies.resize(n_bodies);
       const ConstantsScope scope(constants);
       prm.enter_subsection("Bodies");

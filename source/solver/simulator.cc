@@ -65,11 +65,22 @@ namespace mpm
         grid_fingerprint =
           checkpoint::coarse_mesh_fingerprint(background.triangulation());
         background.setup(params.boundary);
+      }
+    if (params.load_balancing.interval > 0)
+      balancer = std::make_unique<LoadBalancer<dim>>(params.load_balancing,
+                                                     background,
+                                                     particle_handler);
+    if (folder.empty())
+      {
         create_bodies();
         check_shape_functions();
         create_particles();
       }
-    stress_filter = std::make_unique<filters::StressFilter<dim>>(bodies);
+    setup_balance[0] = LoadBalancer<dim>::balance(particle_handler, comm);
+    if (balancer)
+      balancer->repartition(params.boundary);
+    setup_balance[1] = LoadBalancer<dim>::balance(particle_handler, comm);
+    stress_filter    = std::make_unique<filters::StressFilter<dim>>(bodies);
     if (params.shape_functions.family != shape_functions::Family::standard)
       domain_functions =
         std::make_unique<shape_functions::DomainShapeFunctions<dim>>(
@@ -77,16 +88,7 @@ namespace mpm
           params.shape_functions.family,
           params.shape_functions.clamp,
           layout.corners());
-    background.initialize_vector(p2g, transfer::P2GLayout<dim>::n_components);
-    background.initialize_vector(kinematics,
-                                 KinematicsLayout<dim>::n_components);
-    background.initialize_vector(remap, dim);
-    for (const auto &body : bodies)
-      if (body.prm.volumetric_smoothing == filters::VolumetricSmoothing::node)
-        {
-          background.initialize_vector(volume_sums, 3);
-          break;
-        }
+    initialize_nodal_vectors();
     benchmark =
       benchmarks::create_benchmark<dim>(params.benchmark, params.constants);
     if (resumed())
@@ -119,6 +121,34 @@ namespace mpm
             << "Time step control = CFL";
         throw InputError(msg.str());
       }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::initialize_nodal_vectors()
+  {
+    background.initialize_vector(p2g, transfer::P2GLayout<dim>::n_components);
+    background.initialize_vector(kinematics,
+                                 KinematicsLayout<dim>::n_components);
+    background.initialize_vector(remap, dim);
+    for (const auto &body : bodies)
+      if (body.prm.volumetric_smoothing == filters::VolumetricSmoothing::node)
+        {
+          background.initialize_vector(volume_sums, 3);
+          break;
+        }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::repartition()
+  {
+    AssertThrow(balancer, ExcMessage("Load balancing is off"));
+    TimerOutput::Scope t(timer, "repartition");
+    // No nodal value lives from one step to the next, so the vectors are
+    // only re-sized; the particles carry the whole state.
+    balancer->repartition(params.boundary);
+    initialize_nodal_vectors();
   }
 
   template <int dim>
@@ -479,6 +509,8 @@ namespace mpm
     using Scheme = Parameters::TimeStepping::Scheme;
     using transfer::P2GContent;
     last_dt = dt;
+    if (balancer && balancer->due(current_step))
+      repartition();
     if (params.time.scheme == Scheme::usf)
       {
         particle_to_grid(P2GContent::mass_momentum);
@@ -873,6 +905,14 @@ namespace mpm
       pcout << "  stress filter: "
             << Utilities::MPI::sum(stress_filter->n_fallbacks, comm)
             << " cell projections fell back to constant stress" << std::endl;
+    if (balancer)
+      {
+        const auto b = LoadBalancer<dim>::balance(particle_handler, comm);
+        pcout << "  load balancing: " << balancer->n_repartitions
+              << " repartitions; particles per rank now " << b.min << "-"
+              << b.max << " (largest / mean " << b.imbalance() << ")"
+              << std::endl;
+      }
     print_memory();
     timer.print_summary();
   }
@@ -1015,6 +1055,13 @@ namespace mpm
     if (resumed())
       pcout << "  resumed from the checkpoint " << resume_folder << " at step "
             << current_step << ", t = " << current_time << std::endl;
+    if (balancer)
+      pcout << "  load balancing: every " << p.load_balancing.interval
+            << " steps, cell weight " << p.load_balancing.cell_weight
+            << ", particle weight " << p.load_balancing.particle_weight
+            << "; particles per rank at set-up " << setup_balance[0].min << "-"
+            << setup_balance[0].max << " -> " << setup_balance[1].min << "-"
+            << setup_balance[1].max << std::endl;
   }
 
   template <int dim>

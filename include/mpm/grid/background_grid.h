@@ -44,7 +44,8 @@ namespace mpm
            const std::string           &input_folder,
            const bool                   coarse_only = false);
 
-    /// Distribute nodes, cache cell geometry and node constraints.
+    /// Distribute nodes, cache cell geometry and node constraints. Called
+    /// again after a repartition: rebuilds everything of the partition.
     void
     setup(const Parameters::BoundaryConditions &bc);
 

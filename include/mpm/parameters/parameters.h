@@ -183,6 +183,24 @@ namespace mpm
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
+    /// subsection Load balancing: repartition the grid by particle count
+    /// (grid/load_balancer.h; parsed in source/grid/load_balancer.cc).
+    struct LoadBalancing
+    {
+      /// Steps between repartitions; 0: never (the grid keeps the
+      /// partition p4est gave it at set-up, equal numbers of cells).
+      unsigned int interval = 0;
+      /// Work of a cell without particles (node loops, the cell loop).
+      unsigned int cell_weight = 1;
+      /// Work of one particle, in the same units.
+      unsigned int particle_weight = 10;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
     /// Everything in one place, read from one file.
     template <int dim>
     struct AllParameters
@@ -197,6 +215,7 @@ namespace mpm
       std::vector<Body<dim>> bodies;
       Output                 output;
       Checkpointing          checkpointing;
+      LoadBalancing          load_balancing;
       std::string            benchmark = "none";
       std::map<std::string, double> constants;
 

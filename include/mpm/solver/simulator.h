@@ -11,6 +11,7 @@
 #include <mpm/filters/stress_filter.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/io/checkpoint.h>
+#include <mpm/grid/load_balancer.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
 #include <mpm/parameters/parameters.h>
@@ -19,6 +20,7 @@
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/transfer/particle_to_grid.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -91,6 +93,27 @@ namespace mpm
       return n_global_sorts;
     }
 
+    /// Repartition the grid by particle count now (Load balancing; a step
+    /// does it by itself every `Repartition interval` steps) and rebuild
+    /// what depends on the partition. Collective; needs the interval > 0.
+    void
+    repartition();
+
+    /// The load balancer (null if `Repartition interval` is 0).
+    const LoadBalancer<dim> *
+    load_balancer() const
+    {
+      return balancer.get();
+    }
+
+    /// Particles per rank at set-up, before and after the first
+    /// repartition (equal without load balancing).
+    const std::array<ParticleBalance, 2> &
+    balance_at_setup() const
+    {
+      return setup_balance;
+    }
+
     dealii::Particles::ParticleHandler<dim> &
     particles()
     {
@@ -137,6 +160,9 @@ namespace mpm
     // Set-up pieces.
     void
     create_bodies();
+    /// The nodal vectors of the current partition (set-up, repartition).
+    void
+    initialize_nodal_vectors();
     void
     create_particles();
     /// Attach the handler to the grid; count the particles that leave it.
@@ -199,7 +225,9 @@ namespace mpm
 
     NodalVector p2g, kinematics, remap;
     NodalVector volume_sums; ///< node-based volumetric smoothing only
-    double      min_nodal_mass = 0;
+    std::unique_ptr<LoadBalancer<dim>> balancer;
+    std::array<ParticleBalance, 2>     setup_balance;
+    double                             min_nodal_mass = 0;
 
     double       current_time = 0;
     unsigned int current_step = 0;
