@@ -100,9 +100,14 @@ namespace mpm
       }
     catch (const std::exception &e)
       {
-        throw InputError(
-          entry + " = '" + file_name +
-          "': cannot read the mesh: " + clean_dealii_message(e.what()));
+        // deal.II's ExcIO carries a page of generic advice and no detail.
+        std::string why = clean_dealii_message(e.what());
+        if (why.find("An input/output error has occurred") != std::string::npos)
+          why = std::string("it is not a valid ") +
+                (ext == ".msh" ? "Gmsh" : "UCD") +
+                " mesh (a truncated file, or another format)";
+        throw InputError(entry + " = '" + file_name +
+                         "': cannot read the mesh: " + why);
       }
     if (tria.n_global_active_cells() == 0)
       throw InputError(entry + " = '" + file_name + "': the mesh has no cells");
