@@ -530,7 +530,7 @@ namespace mpm
             throw InputError(
               "Upper corner must exceed Lower corner in every direction");
       if (geometry == Geometry::ball && !(radius > 0))
-        throw InputError("Radius must be positive");
+        throw InputError("Radius = " + prm.get("Radius") + " must be positive");
       if (geometry == Geometry::mesh_file && mesh_file.empty())
         throw InputError("Geometry = mesh file needs Mesh file to be set");
       corners.clear();

@@ -121,6 +121,24 @@ namespace mpm
             << "Time step control = CFL";
         throw InputError(msg.str());
       }
+    // Mass-proportional damping scales the grid velocity by (1 - c dt) in
+    // a step: above c dt = 1 it reverses the motion every step, above 2 it
+    // grows without bound.
+    const double first_dt =
+      params.time.step_control == Parameters::TimeStepping::StepControl::fixed ?
+        params.time.time_step :
+        params.time.cfl_number * limit;
+    if (params.time.damping * first_dt > 1.)
+      {
+        std::ostringstream msg;
+        msg << "Time stepping/Damping coefficient = " << params.time.damping
+            << " times the first time step " << first_dt << " is "
+            << params.time.damping * first_dt
+            << " > 1: the damping would reverse the velocity within a step "
+            << "(explicit damping needs c dt <= 1); choose at most "
+            << 1. / first_dt << " or a smaller step";
+        throw InputError(msg.str());
+      }
   }
 
   template <int dim>

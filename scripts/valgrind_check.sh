@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Run a small serial case under valgrind's memcheck and print its summary.
+#
+# usage: scripts/valgrind_check.sh [CASE.prm]
+#   CASE.prm  default: the base case of tests/ (2D, 64 particles on an 8 x 8
+#             grid, 5 steps) with vtu and csv output switched on
+# environment:
+#   MPM    the executable (default build/mpm next to this script)
+#   LEAKS=1  also check leaks (--leak-check=full); leaks in our code count
+#            as errors, the third-party ones are suppressed by
+#            scripts/valgrind.supp
+# Exit status: 0 if memcheck found no error, 1 otherwise (the full log is
+# kept in the work folder, printed at the end).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mpm=${MPM:-$root/build/mpm}
+command -v valgrind > /dev/null ||
+  { echo "valgrind_check.sh: valgrind is not installed" >&2; exit 1; }
+[ -x "$mpm" ] || { echo "valgrind_check.sh: no executable $mpm" >&2; exit 1; }
+
+work=$(mktemp -d /tmp/mpm-valgrind.XXXXXX)
+if [ $# -ge 1 ]; then
+  case_file=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+else
+  case_file=$work/case.prm
+  cat > "$case_file" <<EOF
+include $root/tests/base_case.prm.inc
+subsection Output
+  set Write vtu = true
+  set Write csv = true
+end
+EOF
+fi
+
+# OpenMPI is initialised even in serial runs; as root it needs these.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+leak_args=(--leak-check=no)
+[ "${LEAKS:-0}" = 1 ] &&
+  leak_args=(--leak-check=full --show-leak-kinds=definite,indirect
+             --errors-for-leak-kinds=definite,indirect)
+rc=0
+(cd "$work" && valgrind --tool=memcheck --error-exitcode=1 --num-callers=40 \
+   --track-origins=yes "${leak_args[@]}" \
+   --suppressions="$root/scripts/valgrind.supp" \
+   "$mpm" "$case_file" > mpm_stdout.txt 2> valgrind.log) || rc=$?
+grep -E "ERROR SUMMARY|definitely lost|indirectly lost|suppressed:" \
+  "$work/valgrind.log" | sed 's/^==[0-9]*== *//'
+echo "full log: $work/valgrind.log"
+[ $rc = 0 ] && echo "valgrind_check.sh: OK" || echo "valgrind_check.sh: FAIL (status $rc)"
+exit $rc
