@@ -90,27 +90,11 @@ namespace mpm
     }
 
     template <int dim>
-    __attribute__((always_inline)) inline SymmetricTensor<2, dim>
+    SymmetricTensor<2, dim>
     AssumedStressProjection<dim>::field(const Point<dim> &xi,
                                         const double     *beta) const
     {
-      using C = internal::BasisColumns<dim>;
-      double r[dim], m[C::n_mono];
-      for (unsigned int d = 0; d < dim; ++d)
-        r[d] = 2 * xi[d] - 1;
-      C::monomials(r, m);
-      double natural[n_voigt] = {};
-      for (unsigned int k = 0; k < n_active; ++k)
-        natural[C::row[k]] += beta[k] * m[C::mono[k]];
-      SymmetricTensor<2, dim> sigma;
-      for (unsigned int a = 0; a < n_voigt; ++a)
-        {
-          double s = 0;
-          for (unsigned int b = 0; b < n_voigt; ++b)
-            s += transform[a][b] * natural[b];
-          sigma[voigt_i<dim>[a]][voigt_j<dim>[a]] = s;
-        }
-      return sigma;
+      return cartesian_field(beta).value(xi);
     }
 
     template <int dim>

@@ -166,10 +166,10 @@ namespace mpm
           for (unsigned int d = 0; d < dim; ++d, r /= 3)
             x[d] = 0.5 * (r % 3);
           geo.values_and_gradients(x, N, G);
-          const SymmetricTensor<2, dim> sigma = field.field(x, beta);
+          const SymmetricTensor<2, dim> sigma_k = sigma.value(x);
           for (unsigned int v = 0; v < n_nodes; ++v)
             {
-              const Tensor<1, dim> f = -weight[k] * (sigma * G[v]);
+              const Tensor<1, dim> f = -weight[k] * (sigma_k * G[v]);
               for (unsigned int d = 0; d < dim; ++d)
                 force[v * dim + d] += f[d];
             }
