@@ -147,7 +147,9 @@ namespace mpm
               }
 
             // Traction: sub-cells next to a loaded boundary face carry the
-            // area of their part of it.
+            // area of their part of it, and its centroid (the point the
+            // traction acts at).
+            Tensor<1, dim> face_moment;
             for (const unsigned int f : cell->face_indices())
               {
                 if (!cell->face(f)->at_boundary())
@@ -160,7 +162,10 @@ namespace mpm
                 if (idx[normal_dir] != (side ? n - 1 : 0))
                   continue;
                 if constexpr (dim == 1)
-                  seed.traction_area += 1.;
+                  {
+                    seed.traction_area += 1.;
+                    face_moment += geo.map(Point<dim>(double(side)));
+                  }
                 else
                   for (unsigned int q = 0; q < face_gauss.size(); ++q)
                     {
@@ -188,10 +193,15 @@ namespace mpm
                             }
                           da = cross_product_3d(a, b).norm();
                         }
-                      seed.traction_area +=
+                      const double a =
                         da * face_gauss.weight(q) * std::pow(h, dim - 1);
+                      seed.traction_area += a;
+                      face_moment += a * geo.map(xi);
                     }
               }
+            if (seed.traction_area > 0)
+              seed.traction_offset =
+                face_moment / seed.traction_area - seed.position;
             seeds.push_back(seed);
             seed_ids.push_back(
               static_cast<unsigned long long>(this_cell) * n_sub + s);

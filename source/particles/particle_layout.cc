@@ -46,6 +46,9 @@ namespace mpm
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           n[affine() + i * dim + j] = std::string("C_") + axis[i] + axis[j];
+    if (has_traction_offset)
+      for (unsigned int d = 0; d < dim; ++d)
+        n[traction_offset() + d] = std::string("traction_offset_") + axis[d];
     for (auto &s : n)
       for (auto &c : s)
         if (c == ' ')

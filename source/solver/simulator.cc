@@ -263,6 +263,14 @@ namespace mpm
     const Family family = params.shape_functions.family;
     layout.has_corners  = family == Family::cpdi2;
     layout.has_affine   = params.time.apic;
+    // Loaded faces: the offset of the face from the particle, so that the
+    // traction acts on the face and not a particle half-spacing inside it.
+    layout.has_traction_offset =
+      std::any_of(bodies.begin(), bodies.end(), [](const Body<dim> &b) {
+        return !b.prm.traction_boundary_ids.empty();
+      });
+    for (auto &body : bodies)
+      body.face_offset_slot = layout.traction_offset();
     const std::string what =
       std::string("Shape functions/Family = ") + family_name(family);
     if (shape_functions::is_gimp(family) && !background.is_cartesian())
@@ -304,6 +312,9 @@ namespace mpm
           p[L::domain + d * dim + e] = s.domain[d][e];
       }
     p[L::traction_area] = s.traction_area;
+    if (layout.has_traction_offset)
+      for (unsigned int d = 0; d < dim; ++d)
+        p[layout.traction_offset() + d] = s.traction_offset[d];
     if (layout.has_affine)
       {
         // APIC starts from the gradient of the initial velocity (central

@@ -163,19 +163,30 @@ namespace mpm
                 if (!by_field)
                   sigma = -V * in_plane_stress<dim>(prop + L::stress);
 
-                double ext[dim];
-                bodies[b].external_force_at(p.get_location(),
-                                            prop + L::X,
-                                            m,
-                                            prop[L::traction_area],
-                                            time,
-                                            body_loaded[b],
-                                            ext);
+                double ext[dim], traction[dim];
+                bodies[b].body_force_on(
+                  p.get_location(), prop + L::X, m, time, body_loaded[b], ext);
+                // The traction acts on the loaded face at x_p + d_face;
+                // a face that has left the particle's cell acts at the
+                // nearest point of the cell, the last one whose nodes the
+                // body reaches.
+                Tensor<1, dim> d_face;
+                double         N_face[nv] = {};
+                if (bodies[b].traction_force_on(
+                      p.get_location(), prop, time, traction, d_face))
+                  {
+                    Point<dim> xi_face =
+                      xi + Point<dim>(invert(geo.jacobian(xi)) * d_face);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      xi_face[d] = std::clamp(xi_face[d], 0., 1.);
+                    geo.values(xi_face, N_face);
+                  }
                 for (unsigned int v = 0; v < nv; ++v)
                   {
                     const Tensor<1, dim> f = sigma * G[v];
                     for (unsigned int d = 0; d < dim; ++d)
-                      local[v][1 + dim + d] += f[d] + N[v] * ext[d];
+                      local[v][1 + dim + d] +=
+                        f[d] + N[v] * ext[d] + N_face[v] * traction[d];
                   }
               }
             if (do_momentum)

@@ -82,7 +82,9 @@ namespace mpm
                 continue;
               const double   m = prop[L::mass];
               Tensor<2, dim> sigma;
-              double         ext[dim] = {};
+              double         ext[dim] = {}, traction[dim] = {};
+              Tensor<1, dim> d_face;
+              bool           loaded_face = false;
               if (do_force)
                 {
                   const unsigned int b =
@@ -92,13 +94,14 @@ namespace mpm
                     if (q == prop)
                       sigma = s;
                   sigma *= -prop[L::volume];
-                  bodies[b].external_force_at(p.get_location(),
-                                              prop + L::X,
-                                              m,
-                                              prop[L::traction_area],
-                                              time,
-                                              body_loaded[b],
-                                              ext);
+                  bodies[b].body_force_on(p.get_location(),
+                                          prop + L::X,
+                                          m,
+                                          time,
+                                          body_loaded[b],
+                                          ext);
+                  loaded_face = bodies[b].traction_force_on(
+                    p.get_location(), prop, time, traction, d_face);
                 }
               // APIC: the affine velocity C_p
               Tensor<2, dim> C;
@@ -130,8 +133,13 @@ namespace mpm
                   if (do_force)
                     {
                       const Tensor<1, dim> f = sigma * st.gradient[k];
+                      // the traction acts on the face at x_p + d_face:
+                      // sum_k (S_k + grad S_k . d) x_k = x_p + d
+                      const double S_face =
+                        loaded_face ? S + st.gradient[k] * d_face : 0.;
                       for (unsigned int d = 0; d < dim; ++d)
-                        node[off_f + d] += f[d] + S * ext[d];
+                        node[off_f + d] +=
+                          f[d] + S * ext[d] + S_face * traction[d];
                     }
                 }
             }

@@ -12,6 +12,8 @@
 #include <mpm/benchmarks/cooks_membrane.h>
 #include <mpm/particles/particle_layout.h>
 
+#include <utility>
+
 #include "../tests.h"
 
 int
@@ -49,7 +51,8 @@ end)");
 
   // a linear displacement field, u_y(X) = a + b.X, and u_x = 0
   const double a = 0.3, bx = 0.01, by = -0.02;
-  double       local[4] = {};
+  const unsigned int face = sim.get_bodies()[0].face_offset_slot;
+  double             local[6] = {};
   for (auto &p : sim.particles())
     {
       const double *prop = p.get_properties().data();
@@ -60,16 +63,29 @@ end)");
       if (prop[L::traction_area] > 0 && std::abs(X - 47) > 1e-12)
         local[2] += 1;
       local[3] += 1;
+      // the traction acts on the loaded edge X = 48: every loaded face
+      // point lies on it, and their area-weighted mean is its mid-point
+      if (prop[L::traction_area] > 0)
+        {
+          local[4] = std::max(local[4], std::abs(X + prop[face] - 48));
+          local[5] += prop[L::traction_area] * (Y + prop[face + 1]);
+        }
       p.set_location(dealii::Point<2>(X, Y + a + bx * X + by * Y));
     }
-  double sum[4];
-  dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(local, 4),
+  const double face_off_edge =
+    dealii::Utilities::MPI::max(std::exchange(local[4], 0.), comm);
+  double sum[6];
+  dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(local, 6),
                               comm,
-                              dealii::ArrayView<double>(sum, 4));
+                              dealii::ArrayView<double>(sum, 6));
   mpm_test::log() << "particles: " << sum[3] << std::endl;
   mpm_test::check_small("sum V_p / 1440 - 1", sum[0] / 1440 - 1, 1e-12);
   mpm_test::check_small("sum traction area / 16 - 1", sum[1] / 16 - 1, 1e-12);
   mpm_test::check_small("loaded particles away from the right edge", sum[2], 0);
+  mpm_test::check_small("max |X_face - 48|", face_off_edge, 1e-12);
+  mpm_test::check_small("area-weighted Y_face / 52 - 1",
+                        sum[5] / sum[1] / 52 - 1,
+                        1e-12);
 
   const mpm::benchmarks::CooksMembrane<2> cook(1, 1, 1, 4);
   const auto   m            = cook.measure(sim.particles(), 0, comm);

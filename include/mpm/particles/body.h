@@ -6,6 +6,7 @@
 
 #include <mpm/materials/material.h>
 #include <mpm/parameters/parameters.h>
+#include <mpm/particles/particle_layout.h>
 #include <mpm/utilities/expression.h>
 
 #include <array>
@@ -70,16 +71,21 @@ namespace mpm
     bool
     has_body_force() const;
 
-    /// The external force on a particle, m b(x, X, t) + A t(x, X, t)
-    /// (@p loaded: has_body_force(), cached by the caller).
+    /// Where the traction of a particle acts: prop[face_offset_slot] holds
+    /// the offset X_face - X_p of its loaded face's centroid in the
+    /// reference configuration (ParticleLayout::traction_offset(); 0: none
+    /// stored, the traction acts at the particle).
+    unsigned int face_offset_slot = 0;
+
+    /// The body force m b(x, X, t) on a particle (@p loaded:
+    /// has_body_force(), cached by the caller).
     void
-    external_force_at(const dealii::Point<dim> &x,
-                      const double             *X,
-                      const double              mass,
-                      const double              traction_area,
-                      const double              t,
-                      const bool                loaded,
-                      double                   *out) const
+    body_force_on(const dealii::Point<dim> &x,
+                  const double             *X,
+                  const double              mass,
+                  const double              t,
+                  const bool                loaded,
+                  double                   *out) const
     {
       for (unsigned int d = 0; d < dim; ++d)
         out[d] = 0;
@@ -89,13 +95,49 @@ namespace mpm
           for (unsigned int d = 0; d < dim; ++d)
             out[d] *= mass;
         }
-      if (traction_area > 0)
+    }
+
+    /// The traction force A t on the loaded face a particle carries
+    /// (@p prop: its properties), evaluated at the face, and the face's
+    /// current offset from the particle, d = F (X_face - X_p). The caller
+    /// spreads the force as a force at x + d, not at the particle, which
+    /// would shorten its lever arm by half a particle spacing. Returns
+    /// false, with out = 0, for a particle without a loaded face.
+    bool
+    traction_force_on(const dealii::Point<dim> &x,
+                      const double             *prop,
+                      const double              t,
+                      double                   *out,
+                      dealii::Tensor<1, dim>   &d) const
+    {
+      using L            = ParticleLayout<dim>;
+      const double area  = prop[L::traction_area];
+      d                  = dealii::Tensor<1, dim>();
+      if (!(area > 0))
         {
-          double traction[dim];
-          traction_at(x, X, t, traction);
-          for (unsigned int d = 0; d < dim; ++d)
-            out[d] += traction[d] * traction_area;
+          for (unsigned int k = 0; k < dim; ++k)
+            out[k] = 0;
+          return false;
         }
+      dealii::Point<dim> x_face = x;
+      double             X_face[dim];
+      for (unsigned int i = 0; i < dim; ++i)
+        X_face[i] = prop[L::X + i];
+      if (face_offset_slot > 0)
+        {
+          const double *D = prop + face_offset_slot;
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              X_face[i] += D[i];
+              for (unsigned int j = 0; j < dim; ++j)
+                d[i] += prop[L::F + i * dim + j] * D[j];
+            }
+          x_face += d;
+        }
+      traction_at(x_face, X_face, t, out);
+      for (unsigned int k = 0; k < dim; ++k)
+        out[k] *= area;
+      return true;
     }
   };
 
@@ -118,6 +160,8 @@ namespace mpm
     /// The sub-cell's vertices (deal.II order), for CPDI2.
     std::array<dealii::Point<dim>, (1u << dim)> corners;
     double                                      traction_area = 0;
+    /// Centroid of the loaded face part less the position (reference).
+    dealii::Tensor<1, dim> traction_offset;
   };
 
   /// Build the body mesh (box, ball or file) on every rank.

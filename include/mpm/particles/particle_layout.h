@@ -33,6 +33,8 @@ namespace mpm
    * | history       | n_history   | material internal variables              |
    * | corners       | 2^dim dim   | CPDI2 only: current domain corners       |
    * | affine        | dim*dim     | APIC only: affine velocity C_p           |
+   * | traction_     | dim         | bodies with traction only: reference     |
+   * |   offset      |             | offset X_face - X_p of the loaded face   |
    *
    * Stress is always stored with six components: 2D and 1D models keep the
    * out-of-plane normal stress that plane strain and uniaxial strain need.
@@ -56,6 +58,7 @@ namespace mpm
     unsigned int n_history   = 0;
     bool         has_corners = false;
     bool         has_affine  = false;
+    bool         has_traction_offset = false;
 
     static constexpr unsigned int n_corner_values = (1u << dim) * dim;
 
@@ -73,11 +76,22 @@ namespace mpm
       return has_affine ? corners() + (has_corners ? n_corner_values : 0) : 0;
     }
 
+    /// Start of the loaded-face offset (only when some body carries a
+    /// traction), 0 otherwise.
+    unsigned int
+    traction_offset() const
+    {
+      return has_traction_offset ? history + n_history +
+                                     (has_corners ? n_corner_values : 0) +
+                                     (has_affine ? dim * dim : 0) :
+                                   0;
+    }
+
     unsigned int
     n_properties() const
     {
       return history + n_history + (has_corners ? n_corner_values : 0) +
-             (has_affine ? dim * dim : 0);
+             (has_affine ? dim * dim : 0) + (has_traction_offset ? dim : 0);
     }
 
     /// Names for output, one per slot (vector components share a name).
