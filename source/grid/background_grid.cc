@@ -296,86 +296,138 @@ namespace mpm
     std::vector<typename Triangulation<dim>::active_cell_iterator> &cells,
     std::vector<Point<dim>> &reference_points) const
   {
-    using Iterator = typename Triangulation<dim>::active_cell_iterator;
-    cells.assign(points.size(), tria->end_active(tria->n_levels() - 1));
-    reference_points.assign(points.size(), Point<dim>());
-    const auto [lo, hi] = owned_bounding_box();
-    if (!(lo[0] <= hi[0]))
-      return;
+    OwnedCellLocator(*this).locate(points, cells, reference_points);
+  }
 
-    // Bucket lattice with about one bucket per owned cell.
-    std::vector<Iterator> owned;
-    double                max_extent = 0;
-    for (const auto &cell : tria->active_cell_iterators())
+  template <int dim>
+  BackgroundGrid<dim>::OwnedCellLocator::OwnedCellLocator(
+    const BackgroundGrid<dim> &grid)
+    : grid(grid)
+  {
+    // The owned cells' bounding boxes, from the cached vertices (the same
+    // values as cell->bounding_box(), without deal.II's vertex look-ups).
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lo[d] = std::numeric_limits<double>::max();
+        hi[d] = -std::numeric_limits<double>::max();
+      }
+    double max_extent = 0;
+    for (const auto &cell : grid.tria->active_cell_iterators())
       if (cell->is_locally_owned())
         {
           owned.push_back(cell);
+          const auto &v =
+            grid.cell_geometry[cell->active_cell_index()].vertices;
           for (unsigned int d = 0; d < dim; ++d)
-            max_extent =
-              std::max(max_extent, cell->bounding_box().side_length(d));
+            {
+              double a = v[0][d], b = v[0][d];
+              for (unsigned int i = 1; i < v.size(); ++i)
+                {
+                  a = std::min(a, v[i][d]);
+                  b = std::max(b, v[i][d]);
+                }
+              lo[d]      = std::min(lo[d], a);
+              hi[d]      = std::max(hi[d], b);
+              max_extent = std::max(max_extent, b - a);
+            }
         }
+    if (owned.empty())
+      return;
+
+    // Bucket lattice with about one bucket per owned cell.
     double volume = 1;
     for (unsigned int d = 0; d < dim; ++d)
       volume *= std::max(hi[d] - lo[d], 1e-300);
-    const double size =
-      std::max(max_extent, std::pow(volume / owned.size(), 1. / dim));
-    std::array<unsigned int, dim> n;
+    size = std::max(max_extent, std::pow(volume / owned.size(), 1. / dim));
     for (unsigned int d = 0; d < dim; ++d)
       n[d] =
         std::max(1u, static_cast<unsigned int>((hi[d] - lo[d]) / size) + 1);
-    auto bucket_of = [&](const Point<dim> &x, const bool clamp) -> long {
+    std::size_t n_buckets = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_buckets *= n[d];
+
+    // Each cell goes to every bucket its bounding box touches; stored
+    // compressed (counts, then the cells in ascending order per bucket).
+    auto for_each_bucket_of_cell = [&](const unsigned int c, const auto &f) {
+      const auto &v =
+        grid.cell_geometry[owned[c]->active_cell_index()].vertices;
+      std::array<long, dim> first, last;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          double a = v[0][d], b = v[0][d];
+          for (unsigned int i = 1; i < v.size(); ++i)
+            {
+              a = std::min(a, v[i][d]);
+              b = std::max(b, v[i][d]);
+            }
+          first[d] = std::max<long>(0, std::floor((a - lo[d]) / size));
+          last[d]  = std::min<long>(n[d] - 1, std::floor((b - lo[d]) / size));
+        }
+      std::array<long, dim> i = first;
+      while (true)
+        {
+          long index = 0, stride = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              index += i[d] * stride;
+              stride *= n[d];
+            }
+          f(index);
+          unsigned int d = 0;
+          for (; d < dim; ++d)
+            {
+              if (++i[d] <= last[d])
+                break;
+              i[d] = first[d];
+            }
+          if (d == dim)
+            break;
+        }
+    };
+    // size >= every cell's extent: a cell touches at most 2^dim buckets.
+    AssertThrow((owned.size() << dim) <
+                  std::numeric_limits<unsigned int>::max(),
+                ExcMessage("Too many owned cells for the set-up's cell "
+                           "locator on one rank"));
+    bucket_start.assign(n_buckets + 1, 0);
+    for (unsigned int c = 0; c < owned.size(); ++c)
+      for_each_bucket_of_cell(c, [&](const long b) { ++bucket_start[b + 1]; });
+    for (std::size_t b = 0; b < n_buckets; ++b)
+      bucket_start[b + 1] += bucket_start[b];
+    bucket_cells.resize(bucket_start[n_buckets]);
+    std::vector<unsigned int> next(bucket_start.begin(),
+                                   bucket_start.end() - 1);
+    for (unsigned int c = 0; c < owned.size(); ++c)
+      for_each_bucket_of_cell(c, [&](const long b) {
+        bucket_cells[next[b]++] = c;
+      });
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::OwnedCellLocator::locate(
+    const std::vector<Point<dim>>                                  &points,
+    std::vector<typename Triangulation<dim>::active_cell_iterator> &cells,
+    std::vector<Point<dim>> &reference_points) const
+  {
+    const auto &tria = *grid.tria;
+    cells.assign(points.size(), tria.end_active(tria.n_levels() - 1));
+    reference_points.assign(points.size(), Point<dim>());
+    if (owned.empty())
+      return;
+
+    auto bucket_of = [&](const Point<dim> &x) -> long {
       long index = 0, stride = 1;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          long i = static_cast<long>(std::floor((x[d] - lo[d]) / size));
-          if (clamp)
-            i = std::min<long>(std::max<long>(i, 0), n[d] - 1);
-          else if (i < 0 || i >= long(n[d]))
+          const long i = static_cast<long>(std::floor((x[d] - lo[d]) / size));
+          if (i < 0 || i >= long(n[d]))
             return -1;
           index += i * stride;
           stride *= n[d];
         }
       return index;
     };
-    long n_buckets = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      n_buckets *= n[d];
-    std::vector<std::vector<unsigned int>> buckets(n_buckets);
-    for (unsigned int c = 0; c < owned.size(); ++c)
-      {
-        const auto            box = owned[c]->bounding_box();
-        std::array<long, dim> first, last;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            first[d] = std::max<long>(
-              0,
-              std::floor((box.get_boundary_points().first[d] - lo[d]) / size));
-            last[d] = std::min<long>(
-              n[d] - 1,
-              std::floor((box.get_boundary_points().second[d] - lo[d]) / size));
-          }
-        // all buckets in [first, last]
-        std::array<long, dim> i = first;
-        while (true)
-          {
-            long index = 0, stride = 1;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                index += i[d] * stride;
-                stride *= n[d];
-              }
-            buckets[index].push_back(c);
-            unsigned int d = 0;
-            for (; d < dim; ++d)
-              {
-                if (++i[d] <= last[d])
-                  break;
-                i[d] = first[d];
-              }
-            if (d == dim)
-              break;
-          }
-      }
 
     // Tie-break for points on faces: test a slightly shifted point with
     // half-open intervals.
@@ -388,13 +440,14 @@ namespace mpm
     for (std::size_t p = 0; p < points.size(); ++p)
       {
         const Point<dim> x = points[p] + shift;
-        const long       b = bucket_of(x, false);
+        const long       b = bucket_of(x);
         if (b < 0)
           continue;
-        for (const unsigned int c : buckets[b])
+        for (unsigned int k = bucket_start[b]; k < bucket_start[b + 1]; ++k)
           {
-            const auto      &geo = cell_geometry[owned[c]->active_cell_index()];
-            const Point<dim> xi  = geo.inverse_map(x, centre);
+            const unsigned int c = bucket_cells[k];
+            const auto &geo = grid.cell_geometry[owned[c]->active_cell_index()];
+            const Point<dim> xi     = geo.inverse_map(x, centre);
             bool             inside = true;
             for (unsigned int d = 0; d < dim; ++d)
               inside = inside && xi[d] >= 0. && xi[d] < 1.;

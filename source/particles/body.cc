@@ -92,6 +92,7 @@ namespace mpm
     const QGauss<dim>  gauss(2); // exact for det J of Q1 cells
     const QGauss<dim - 1 == 0 ? 1 : dim - 1> face_gauss(2);
     const double                             h = 1. / n;
+    const double h_dim = std::pow(h, dim); // sub-cell volume in reference
 
     unsigned int cell_index = 0;
     for (const auto &cell : mesh.active_cell_iterators())
@@ -130,7 +131,7 @@ namespace mpm
             for (unsigned int q = 0; q < gauss.size(); ++q)
               seed.volume +=
                 determinant(geo.jacobian(to_cell(gauss.point(q)))) *
-                gauss.weight(q) * std::pow(h, dim);
+                gauss.weight(q) * h_dim;
             if (!(seed.volume > 0))
               throw InputError("The body mesh has an inverted or degenerate "
                                "cell at " +
@@ -209,6 +210,41 @@ namespace mpm
       }
   }
 
+  template <int dim>
+  void
+  split_body_cell_positions(const Triangulation<dim> &mesh,
+                            const unsigned int        n,
+                            const unsigned int        first_cell,
+                            const unsigned int        end_cell,
+                            std::vector<Point<dim>>  &positions)
+  {
+    // The seed positions of split_body_cells(), computed the same way.
+    using Cell                    = shape_functions::Q1Cell<dim>;
+    const unsigned int n_sub      = Utilities::fixed_power<dim>(n);
+    const double       h          = 1. / n;
+    unsigned int       cell_index = 0;
+    for (const auto &cell : mesh.active_cell_iterators())
+      {
+        const unsigned int this_cell = cell_index++;
+        if (this_cell < first_cell)
+          continue;
+        if (this_cell >= end_cell)
+          break;
+        std::array<Point<dim>, Cell::n_vertices> v;
+        for (unsigned int i = 0; i < Cell::n_vertices; ++i)
+          v[i] = cell->vertex(i);
+        Cell geo;
+        geo.reinit(v, 0.);
+        for (unsigned int s = 0; s < n_sub; ++s)
+          {
+            Point<dim> xi;
+            for (unsigned int d = 0, r = s; d < dim; ++d, r /= n)
+              xi[d] = (r % n) * h + h * 0.5;
+            positions.push_back(geo.map(xi));
+          }
+      }
+  }
+
   template struct Body<1>;
   template struct Body<2>;
   template struct Body<3>;
@@ -251,4 +287,22 @@ namespace mpm
                       unsigned int,
                       std::vector<ParticleSeed<3>> &,
                       std::vector<unsigned long long> &);
+  template void
+  split_body_cell_positions<1>(const Triangulation<1> &,
+                               unsigned int,
+                               unsigned int,
+                               unsigned int,
+                               std::vector<Point<1>> &);
+  template void
+  split_body_cell_positions<2>(const Triangulation<2> &,
+                               unsigned int,
+                               unsigned int,
+                               unsigned int,
+                               std::vector<Point<2>> &);
+  template void
+  split_body_cell_positions<3>(const Triangulation<3> &,
+                               unsigned int,
+                               unsigned int,
+                               unsigned int,
+                               std::vector<Point<3>> &);
 } // namespace mpm

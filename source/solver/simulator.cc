@@ -408,14 +408,21 @@ namespace mpm
 
         // Every rank walks the whole body mesh in chunks and keeps the
         // particles its owned cells contain (points on faces between
-        // ranks go to exactly one of them).
-        auto for_each_chunk = [&](const auto &work) {
-          const unsigned int cells_per_chunk = 16384;
+        // ranks go to exactly one of them). The locator's lattice over
+        // the owned cells is built once, not per chunk.
+        const typename BackgroundGrid<dim>::OwnedCellLocator locator(
+          background);
+        const unsigned int cells_per_chunk = 16384;
+        auto               for_each_chunk  = [&](const auto &work) {
           for (unsigned int first = 0; first < n_cells;
                first += cells_per_chunk)
             {
               std::vector<ParticleSeed<dim>>  seeds;
               std::vector<unsigned long long> seed_ids;
+              seeds.reserve(
+                std::size_t(std::min(cells_per_chunk, n_cells - first)) *
+                Utilities::fixed_power<dim>(n));
+              seed_ids.reserve(seeds.capacity());
               split_body_cells(mesh,
                                n,
                                body.prm.traction_boundary_ids,
@@ -428,7 +435,7 @@ namespace mpm
                 positions[i] = seeds[i].position;
               std::vector<typename Triangulation<dim>::active_cell_iterator>
                 cells;
-              background.locate_in_owned_cells(positions, cells, xi);
+              locator.locate(positions, cells, xi);
               work(seeds, seed_ids, cells, xi);
             }
         };
@@ -436,12 +443,26 @@ namespace mpm
           background.triangulation().n_levels() - 1);
         // Count first, so that deal.II's particle storage is allocated
         // once at its final size (growing it doubles the peak memory).
+        // The count needs only the seeds' positions.
         unsigned long long local_count = 0;
-        for_each_chunk(
-          [&](const auto &, const auto &, const auto &cells, const auto &) {
-            for (const auto &c : cells)
-              local_count += (c != end_cell);
-          });
+        {
+          std::vector<Point<dim>> positions, xi;
+          std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+          for (unsigned int first = 0; first < n_cells;
+               first += cells_per_chunk)
+            {
+              positions.clear();
+              split_body_cell_positions(mesh,
+                                        n,
+                                        first,
+                                        std::min(n_cells,
+                                                 first + cells_per_chunk),
+                                        positions);
+              locator.locate(positions, cells, xi);
+              for (const auto &c : cells)
+                local_count += (c != end_cell);
+            }
+        }
         particle_handler.reserve(particle_handler.n_locally_owned_particles() +
                                  local_count);
         unsigned long long  inserted = 0;

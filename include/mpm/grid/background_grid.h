@@ -11,6 +11,7 @@
 #include <mpm/parameters/parameters.h>
 #include <mpm/shape_functions/q1_cell.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -200,6 +201,37 @@ namespace mpm
       std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
                                       &cells,
       std::vector<dealii::Point<dim>> &reference_points) const;
+
+    /**
+     * locate_in_owned_cells() for many calls: the bucket lattice over the
+     * owned cells is built once, at construction, and reused by every
+     * locate() (set-up locates the particles of a body chunk by chunk).
+     * Gives the same cells and reference coordinates as
+     * locate_in_owned_cells(). Valid while the grid is not changed.
+     */
+    class OwnedCellLocator
+    {
+    public:
+      explicit OwnedCellLocator(const BackgroundGrid<dim> &grid);
+
+      void
+      locate(
+        const std::vector<dealii::Point<dim>> &points,
+        std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
+                                        &cells,
+        std::vector<dealii::Point<dim>> &reference_points) const;
+
+    private:
+      const BackgroundGrid<dim> &grid;
+      std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
+                                    owned;
+      dealii::Point<dim>            lo, hi;
+      double                        size = 0;
+      std::array<unsigned int, dim> n;
+      /// Owned cells (indices into owned) of bucket b, ascending:
+      /// bucket_cells[bucket_start[b] .. bucket_start[b+1]).
+      std::vector<unsigned int> bucket_start, bucket_cells;
+    };
 
     /// Bounding box of the owned cells of this rank (empty: lower > upper).
     std::pair<dealii::Point<dim>, dealii::Point<dim>>

@@ -187,4 +187,17 @@ namespace mpm
                    const unsigned int                             end_cell,
                    std::vector<ParticleSeed<dim>>                &seeds,
                    std::vector<unsigned long long>               &seed_ids);
+
+  /**
+   * Only the positions of the seeds split_body_cells() gives for the same
+   * cells (appended to @p positions, the same values and order): enough to
+   * count the particles a rank owns, at a fraction of the cost.
+   */
+  template <int dim>
+  void
+  split_body_cell_positions(const dealii::Triangulation<dim> &body_mesh,
+                            const unsigned int                n,
+                            const unsigned int                first_cell,
+                            const unsigned int                end_cell,
+                            std::vector<dealii::Point<dim>>  &positions);
 } // namespace mpm
