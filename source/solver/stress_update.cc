@@ -204,6 +204,16 @@ namespace mpm
         }
     };
 
+    // Models whose state is J alone (the fluid) keep the smoothed volume
+    // (Material::state_is_volume_ratio).
+    auto keep_smoothed_volume = [&](double *prop, const Tensor<2, dim> &F) {
+      if (bodies[body_of(prop)].material->state_is_volume_ratio())
+        {
+          store_matrix<dim>(F, prop + L::F);
+          prop[L::volume] = determinant(F) * prop[L::volume0];
+        }
+    };
+
     // Kinematics of the cell's particles, kept while the cell averages
     // are summed.
     struct Buffered
@@ -277,8 +287,11 @@ namespace mpm
                       }
                   }
                 if (m > 0 && J > 0)
-                  filters::smooth_volume_change<dim>(
-                    grad_v, F, J, mJ / m, mtr / m);
+                  {
+                    filters::smooth_volume_change<dim>(
+                      grad_v, F, J, mJ / m, mtr / m);
+                    keep_smoothed_volume(prop, F);
+                  }
                 update_particle(p, prop, h, grad_v, F);
               }
             else
@@ -305,8 +318,11 @@ namespace mpm
             const auto  &sum  = cell_sums[body_of(prop)];
             const double J    = determinant(F);
             if (J > 0)
-              filters::smooth_volume_change<dim>(
-                grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);
+              {
+                filters::smooth_volume_change<dim>(
+                  grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);
+                keep_smoothed_volume(prop, F);
+              }
             update_particle(p, prop, h, grad_v, F);
           }
       });

@@ -145,6 +145,22 @@ namespace mpm
         return 1.;
       }
 
+      /**
+       * Whether the model's whole state is its volume ratio J (a fluid:
+       * the equation of state sees nothing else). With `Volumetric
+       * smoothing` such a particle then takes the smoothed J as its own
+       * (its F is scaled to it), instead of only computing its stress from
+       * it: a particle that kept its own J would carry a volume no
+       * pressure ever acted on into the next cell's average, and in the
+       * water column that grows into a cell-to-cell checkerboard that
+       * stops the run (doc/water_column.md, theory 4.10).
+       */
+      virtual bool
+      state_is_volume_ratio() const
+      {
+        return false;
+      }
+
       /// Reference mass density rho_0.
       double
       reference_density() const

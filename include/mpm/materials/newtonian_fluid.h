@@ -60,6 +60,12 @@ namespace mpm
       double
       initial_jacobian(const SymmetricTensor<2, 3> &stress) const override;
 
+      bool
+      state_is_volume_ratio() const override
+      {
+        return true;
+      }
+
       /// Pressure p(J) from the equation of state.
       double
       pressure(const double J) const;
