@@ -150,27 +150,6 @@ namespace mpm
       return Status::lost_corner;
     }
 
-    namespace
-    {
-      /// Step the multi-index @p i through [lo, hi] (first index fastest);
-      /// false after the last.
-      template <int dim>
-      inline bool
-      next_index(int *i, const int *lo, const int *hi)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            if (i[d] < hi[d])
-              {
-                ++i[d];
-                return true;
-              }
-            i[d] = lo[d];
-          }
-        return false;
-      }
-    } // namespace
-
     template <int dim>
     typename DomainShapeFunctions<dim>::Status
     DomainShapeFunctions<dim>::evaluate_gimp(const unsigned int cell,
@@ -198,8 +177,6 @@ namespace mpm
       Point<dim>  lower, upper;
       // reach[d]: the neighbour layers needed below (bit 0) / above (bit 1)
       unsigned int reach[dim];
-      // start and width along d of the cells below, own and above
-      double start[dim][3], width[dim][3];
       for (unsigned int d = 0; d < dim; ++d)
         {
           lower[d]         = x[d] - l[d];
@@ -207,8 +184,6 @@ namespace mpm
           const double a   = own.vertices[0][d];
           const double b   = a + own.extent[d];
           const double tol = 1e-10 * own.extent[d];
-          start[d][1]      = a;
-          width[d][1]      = own.extent[d];
           reach[d]         = 0;
           for (unsigned int side = 0; side < 2; ++side)
             {
@@ -237,8 +212,6 @@ namespace mpm
               if (side ? end > na + next.extent[d] + tol : end < na - tol)
                 return Status::too_wide;
               reach[d] |= 1u << side;
-              start[d][2 * side] = na;
-              width[d][2 * side] = next.extent[d];
             }
         }
       double volume = 1;
@@ -246,78 +219,30 @@ namespace mpm
         volume *= upper[d] - lower[d];
       const double inverse_volume = 1. / volume;
 
-      // The 1D factors of each direction (gimp.h).
-      GimpFactors1D f[dim];
-      for (unsigned int d = 0; d < dim; ++d)
-        for (int o = -1; o <= 1; ++o)
-          if (o == 0 || (reach[d] & (o < 0 ? 1u : 2u)))
-            f[d].add_cell(
-              o, start[d][o + 1], width[d][o + 1], lower[d], upper[d]);
-
-      // The nodes of every cell of the block, offsets o_d from lo[d] to
-      // hi[d] (-1 or 0 to 0 or 1), by their 1D node numbers j_d = o_d + 1
-      // + (bit d of the vertex): node_of[sum_d j_d 4^d].
-      constexpr unsigned int nv = n_q1<dim>;
-      int                    lo[dim], hi[dim], o[dim];
-      for (unsigned int d = 0; d < dim; ++d)
+      // Every cell of the block: offsets -1, 0, +1 where needed.
+      s.n = 0;
+      for (unsigned int k = 0; k < Utilities::fixed_power<dim>(3u); ++k)
         {
-          lo[d] = o[d] = (reach[d] & 1) ? -1 : 0;
-          hi[d]        = (reach[d] & 2) ? 1 : 0;
-        }
-      unsigned int node_of[1u << (2 * dim)];
-      while (true)
-        {
-          unsigned int c = cell, base = 0;
-          for (unsigned int d = 0; d < dim; ++d)
+          unsigned int c    = cell;
+          bool         skip = false;
+          for (unsigned int d = 0, r = k; d < dim; ++d, r /= 3)
             {
-              base += (o[d] + 1) << (2 * d);
-              if (o[d] == 0)
+              const unsigned int o = r % 3; // 0: own, 1: below, 2: above
+              if (o == 0)
                 continue;
-              c = grid.face_neighbor(c, 2 * d + (o[d] > 0));
+              if (!(reach[d] & (1u << (o - 1))))
+                {
+                  skip = true;
+                  break;
+                }
+              c = grid.face_neighbor(c, 2 * d + (o - 1));
               if (c == Grid::outside_grid || c == Grid::unknown_cell)
                 return c == Grid::outside_grid ? Status::outside_grid :
                                                  Status::beyond_ghosts;
             }
-          const unsigned int *nodes = grid.nodes(c);
-          for (unsigned int v = 0; v < nv; ++v)
-            {
-              unsigned int j = base;
-              for (unsigned int d = 0; d < dim; ++d)
-                j += ((v >> d) & 1) << (2 * d);
-              node_of[j] = nodes[v];
-            }
-          if (!next_index<dim>(o, lo, hi))
-            break;
-        }
-
-      // Every node reached: j_d from lo[d] + 1 to hi[d] + 2.
-      s.n = 0;
-      int j[dim], jlo[dim], jhi[dim];
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          jlo[d] = j[d] = lo[d] + 1;
-          jhi[d]        = hi[d] + 2;
-        }
-      while (true)
-        {
-          unsigned int   index = 0;
-          double         w     = inverse_volume;
-          Tensor<1, dim> g;
-          for (unsigned int e = 0; e < dim; ++e)
-            g[e] = inverse_volume;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              index += j[d] << (2 * d);
-              w *= f[d].W[j[d]];
-              for (unsigned int e = 0; e < dim; ++e)
-                g[e] *= (e == d) ? f[d].G[j[d]] : f[d].W[j[d]];
-            }
-          const unsigned int k = s.n++;
-          s.node[k]            = node_of[index];
-          s.value[k]           = w;
-          s.gradient[k]        = g;
-          if (!next_index<dim>(j, jlo, jhi))
-            break;
+          if (!skip)
+            add_gimp_cell<dim>(
+              grid.geometry(c), grid.nodes(c), lower, upper, inverse_volume, s);
         }
       return Status::ok;
     }
