@@ -136,6 +136,36 @@ namespace mpm
         }
       if (!(cw.quality > min_domain_quality))
         return;
+      if constexpr (dim == 2)
+        {
+          // Closed form (the Gauss loop below was 28% of a CPDI2 run).
+          // With x = x0 + a xi + b eta + c xi eta, det J = D0 + D1 xi +
+          // D2 eta is linear, so int M_c det J has a short formula; and
+          // int grad M_c dx = int_boundary M_c n ds = 1/2 of the outward
+          // normals of the two edges at c, i.e. 1/2 rot(x_next - x_prev)
+          // around the counter-clockwise cycle 0, 1, 3, 2.
+          const Tensor<1, dim> a = cw.x[1] - cw.x[0], b = cw.x[2] - cw.x[0],
+                               c = cw.x[3] - cw.x[2] - a;
+          auto cross = [](const Tensor<1, dim> &u, const Tensor<1, dim> &v) {
+            return u[0] * v[1] - u[1] * v[0];
+          };
+          const double D0 = cross(a, b), D1 = cross(a, c), D2 = cross(c, b);
+          cw.volume                   = D0 + 0.5 * (D1 + D2);
+          const double inverse_volume = 1. / cw.volume;
+          // neighbours of corner k along the cycle 0, 1, 3, 2
+          constexpr unsigned int next[4] = {1, 3, 0, 2}, prev[4] = {2, 0, 3, 1};
+          for (unsigned int k = 0; k < nc; ++k)
+            {
+              // int xi M_k, int eta M_k over the reference square
+              const double m1 = (k & 1) ? 1. / 6 : 1. / 12,
+                           m2 = (k & 2) ? 1. / 6 : 1. / 12;
+              cw.w[k] = (0.25 * D0 + m1 * D1 + m2 * D2) * inverse_volume;
+              const Tensor<1, dim> e = cw.x[next[k]] - cw.x[prev[k]];
+              cw.g[k][0]             = 0.5 * inverse_volume * e[1];
+              cw.g[k][1]             = -0.5 * inverse_volume * e[0];
+            }
+          return;
+        }
 
       const double a = 0.5 - 0.5 / std::sqrt(3.), b = 0.5 + 0.5 / std::sqrt(3.);
       const double weight = 1. / nc; // Gauss weights on [0,1]^dim
