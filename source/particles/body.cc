@@ -77,6 +77,36 @@ namespace mpm
       }
   }
 
+  namespace
+  {
+    /// Visit the body-mesh cells with index in [first_cell, end_cell) in
+    /// active-cell order, with their Q1 geometry.
+    template <int dim, typename Function>
+    void
+    for_each_body_cell(const Triangulation<dim> &mesh,
+                       const unsigned int        first_cell,
+                       const unsigned int        end_cell,
+                       const Function           &f)
+    {
+      using Cell              = shape_functions::Q1Cell<dim>;
+      unsigned int cell_index = 0;
+      for (const auto &cell : mesh.active_cell_iterators())
+        {
+          const unsigned int this_cell = cell_index++;
+          if (this_cell < first_cell)
+            continue;
+          if (this_cell >= end_cell)
+            break;
+          std::array<Point<dim>, Cell::n_vertices> v;
+          for (unsigned int i = 0; i < Cell::n_vertices; ++i)
+            v[i] = cell->vertex(i);
+          Cell geo;
+          geo.reinit(v, 0.);
+          f(cell, this_cell, geo);
+        }
+    }
+  } // namespace
+
   template <int dim>
   void
   split_body_cells(const Triangulation<dim>              &mesh,
@@ -94,20 +124,11 @@ namespace mpm
     const double                             h = 1. / n;
     const double h_dim = std::pow(h, dim); // sub-cell volume in reference
 
-    unsigned int cell_index = 0;
-    for (const auto &cell : mesh.active_cell_iterators())
-      {
-        const unsigned int this_cell = cell_index++;
-        if (this_cell < first_cell)
-          continue;
-        if (this_cell >= end_cell)
-          break;
-        std::array<Point<dim>, Cell::n_vertices> v;
-        for (unsigned int i = 0; i < Cell::n_vertices; ++i)
-          v[i] = cell->vertex(i);
-        Cell geo;
-        geo.reinit(v, 0.);
-
+    for_each_body_cell(
+      mesh,
+      first_cell,
+      end_cell,
+      [&](const auto &cell, const unsigned int this_cell, const Cell &geo) {
         for (unsigned int s = 0; s < n_sub; ++s)
           {
             unsigned int idx[dim];
@@ -207,7 +228,7 @@ namespace mpm
             seed_ids.push_back(
               static_cast<unsigned long long>(this_cell) * n_sub + s);
           }
-      }
+      });
   }
 
   template <int dim>
@@ -219,30 +240,22 @@ namespace mpm
                             std::vector<Point<dim>>  &positions)
   {
     // The seed positions of split_body_cells(), computed the same way.
-    using Cell                    = shape_functions::Q1Cell<dim>;
-    const unsigned int n_sub      = Utilities::fixed_power<dim>(n);
-    const double       h          = 1. / n;
-    unsigned int       cell_index = 0;
-    for (const auto &cell : mesh.active_cell_iterators())
-      {
-        const unsigned int this_cell = cell_index++;
-        if (this_cell < first_cell)
-          continue;
-        if (this_cell >= end_cell)
-          break;
-        std::array<Point<dim>, Cell::n_vertices> v;
-        for (unsigned int i = 0; i < Cell::n_vertices; ++i)
-          v[i] = cell->vertex(i);
-        Cell geo;
-        geo.reinit(v, 0.);
-        for (unsigned int s = 0; s < n_sub; ++s)
-          {
-            Point<dim> xi;
-            for (unsigned int d = 0, r = s; d < dim; ++d, r /= n)
-              xi[d] = (r % n) * h + h * 0.5;
-            positions.push_back(geo.map(xi));
-          }
-      }
+    using Cell               = shape_functions::Q1Cell<dim>;
+    const unsigned int n_sub = Utilities::fixed_power<dim>(n);
+    const double       h     = 1. / n;
+    for_each_body_cell(mesh,
+                       first_cell,
+                       end_cell,
+                       [&](const auto &, unsigned int, const Cell &geo) {
+                         for (unsigned int s = 0; s < n_sub; ++s)
+                           {
+                             Point<dim> xi;
+                             for (unsigned int d = 0, r = s; d < dim;
+                                  ++d, r /= n)
+                               xi[d] = (r % n) * h + h * 0.5;
+                             positions.push_back(geo.map(xi));
+                           }
+                       });
   }
 
   template struct Body<1>;
