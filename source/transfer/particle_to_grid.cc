@@ -166,12 +166,17 @@ namespace mpm
                 double ext[dim], traction[dim];
                 bodies[b].body_force_on(
                   p.get_location(), prop + L::X, m, time, body_loaded[b], ext);
+                for (unsigned int v = 0; v < nv; ++v)
+                  {
+                    const Tensor<1, dim> f = sigma * G[v];
+                    for (unsigned int d = 0; d < dim; ++d)
+                      local[v][1 + dim + d] += f[d] + N[v] * ext[d];
+                  }
                 // The traction acts on the loaded face at x_p + d_face;
                 // a face that has left the particle's cell acts at the
                 // nearest point of the cell, the last one whose nodes the
                 // body reaches.
                 Tensor<1, dim> d_face;
-                double         N_face[nv] = {};
                 if (bodies[b].traction_force_on(
                       p.get_location(), prop, time, traction, d_face))
                   {
@@ -179,14 +184,11 @@ namespace mpm
                       xi + Point<dim>(invert(geo.jacobian(xi)) * d_face);
                     for (unsigned int d = 0; d < dim; ++d)
                       xi_face[d] = std::clamp(xi_face[d], 0., 1.);
+                    double N_face[nv];
                     geo.values(xi_face, N_face);
-                  }
-                for (unsigned int v = 0; v < nv; ++v)
-                  {
-                    const Tensor<1, dim> f = sigma * G[v];
-                    for (unsigned int d = 0; d < dim; ++d)
-                      local[v][1 + dim + d] +=
-                        f[d] + N[v] * ext[d] + N_face[v] * traction[d];
+                    for (unsigned int v = 0; v < nv; ++v)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        local[v][1 + dim + d] += N_face[v] * traction[d];
                   }
               }
             if (do_momentum)

@@ -82,7 +82,7 @@ namespace mpm
                 continue;
               const double   m = prop[L::mass];
               Tensor<2, dim> sigma;
-              double         ext[dim] = {}, traction[dim] = {};
+              double         ext[dim] = {}, traction[dim];
               Tensor<1, dim> d_face;
               bool           loaded_face = false;
               if (do_force)
@@ -133,15 +133,20 @@ namespace mpm
                   if (do_force)
                     {
                       const Tensor<1, dim> f = sigma * st.gradient[k];
-                      // the traction acts on the face at x_p + d_face:
-                      // sum_k (S_k + grad S_k . d) x_k = x_p + d
-                      const double S_face =
-                        loaded_face ? S + st.gradient[k] * d_face : 0.;
                       for (unsigned int d = 0; d < dim; ++d)
-                        node[off_f + d] +=
-                          f[d] + S * ext[d] + S_face * traction[d];
+                        node[off_f + d] += f[d] + S * ext[d];
                     }
                 }
+              // The traction acts on the face at x_p + d_face:
+              // sum_k (S_k + grad S_k . d) x_k = x_p + d.
+              if (loaded_face)
+                for (unsigned int k = 0; k < st.n; ++k)
+                  {
+                    double      *node   = out + st.node[k] * nc;
+                    const double S_face = st.value[k] + st.gradient[k] * d_face;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      node[off_f + d] += S_face * traction[d];
+                  }
             }
         });
       nodal.compress(VectorOperation::add);
