@@ -49,34 +49,6 @@ namespace mpm
     }
 
     template <int dim>
-    typename StressFilter<dim>::Result
-    StressFilter<dim>::project(const Tensor<2, dim> &J0,
-                               const unsigned int    b,
-                               double               *beta)
-    {
-      if constexpr (dim == 1)
-        {
-          // no assumed-stress field in 1D (the parameters refuse it)
-          (void)J0, (void)b, (void)beta;
-          return Result::unchanged;
-        }
-      else
-        {
-          if (samples.empty())
-            return Result::unchanged;
-          use_geometry(J0, b);
-          const Result result = projections[b]->project(samples, beta);
-          if (result != Result::full)
-            ++n_fallbacks;
-          if (result == Result::unchanged || !write_back[b])
-            return result;
-          for (unsigned int k = 0; k < samples.size(); ++k)
-            write_stress(b, targets[k], samples[k].stress);
-          return result;
-        }
-    }
-
-    template <int dim>
     void
     StressFilter<dim>::use_geometry(const Tensor<2, dim> &J0,
                                     const unsigned int    b)
@@ -123,9 +95,9 @@ namespace mpm
           return;
         }
       auto full = load_stress(st);
-      full[2][2] += out_of_plane_nu[b] * (s[0][0] - full[0][0] +
-                                          s[dim - 1][dim - 1] -
-                                          full[dim - 1][dim - 1]);
+      full[2][2] +=
+        out_of_plane_nu[b] *
+        (s[0][0] - full[0][0] + s[dim - 1][dim - 1] - full[dim - 1][dim - 1]);
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)
           full[i][j] = s[i][j];

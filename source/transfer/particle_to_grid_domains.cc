@@ -46,9 +46,9 @@ namespace mpm
       for (unsigned int d = 0; d < dim; ++d)
         centre[d] = 0.5;
       shape_functions::Stencil<dim> st;
-      // Filtered stress = force only: the projected stresses of this
-      // cell's particles, by their properties (a handful per cell).
-      std::vector<std::pair<const double *, Tensor<2, dim>>> projected;
+      // Filtered stress = force only: per body, whether this cell's
+      // projected field (filter->cartesian_field) gives its stresses.
+      std::vector<char> by_field(bodies.size(), 0);
 
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
@@ -57,7 +57,6 @@ namespace mpm
               {
                 // Project the filtered bodies' stresses of this cell first;
                 // the force below then uses the projected stresses.
-                projected.clear();
                 std::fill(present.begin(), present.end(), 0);
                 for (const auto &p : pic)
                   present[static_cast<unsigned int>(
@@ -65,14 +64,11 @@ namespace mpm
                 const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
                 double               beta[filters::StressFilter<dim>::n_beta];
                 for (unsigned int b = 0; b < bodies.size(); ++b)
-                  if (present[b] && filter->filtered(b) &&
-                      filter->filter_cell(J0, pic, b, beta) !=
-                        filters::StressFilter<dim>::Result::unchanged &&
-                      !filter->writes_back(b))
-                    for (unsigned int k = 0; k < filter->n_projected(); ++k)
-                      projected.emplace_back(filter->projected_particle(k),
-                                             Tensor<2, dim>(
-                                               filter->projected_stress(k)));
+                  by_field[b] =
+                    present[b] && filter->filtered(b) &&
+                    filter->filter_cell(J0, pic, b, beta) !=
+                      filters::StressFilter<dim>::Result::unchanged &&
+                    !filter->writes_back(b);
               }
           const unsigned int index = cell->active_cell_index();
           for (const auto &p : pic)
@@ -90,9 +86,10 @@ namespace mpm
                   const unsigned int b =
                     static_cast<unsigned int>(prop[L::body]);
                   sigma = in_plane_stress<dim>(prop + L::stress);
-                  for (const auto &[q, s] : projected)
-                    if (q == prop)
-                      sigma = s;
+                  if constexpr (dim > 1)
+                    if (by_field[b])
+                      sigma = filter->cartesian_field(b).value(
+                        p.get_reference_location());
                   sigma *= -prop[L::volume];
                   bodies[b].body_force_on(p.get_location(),
                                           prop + L::X,

@@ -31,8 +31,13 @@ namespace mpm
      *
      * A body with `Filtered stress = force only` is projected the same way
      * but nothing is written back: the field makes the force only, and
-     * projected_stress() gives the projected particle stresses of the last
-     * filter_cell() (for the domain families, whose force is per particle).
+     * cartesian_field() gives the projected stress at a particle (for the
+     * domain families, whose force is per particle).
+     *
+     * There is one projection path: the cell's moments are summed particle
+     * by particle (add_particle(), fused into the P2G loop) and solved once
+     * (finish_cell()); filter_cell() runs the same three steps for one body
+     * of one cell.
      */
     template <int dim>
     class StressFilter
@@ -65,30 +70,10 @@ namespace mpm
       }
 
       /**
-       * After filter_cell() for a body that does not write back: the
-       * projected in-plane stress of the k-th of its particles in the cell
-       * (in the cell's particle order), and that particle's properties.
-       */
-      unsigned int
-      n_projected() const
-      {
-        return samples.size();
-      }
-      const dealii::SymmetricTensor<2, dim> &
-      projected_stress(const unsigned int k) const
-      {
-        return samples[k].stress;
-      }
-      const double *
-      projected_particle(const unsigned int k) const
-      {
-        return targets[k];
-      }
-
-      /**
        * Filter body @p b's particles among @p particles_in_cell (a cell
-       * whose Jacobian at its centre is @p J0); the field's coefficients go
-       * to @p beta.
+       * whose Jacobian at its centre is @p J0): begin, add and finish for
+       * that body alone. The field's coefficients go to @p beta, its
+       * monomial form to cartesian_field(b).
        */
       template <typename ParticleRange>
       Result
@@ -101,9 +86,10 @@ namespace mpm
        * The same projection fused into a particle loop: begin_cell() for
        * a cell whose Jacobian at its centre is @p J0, add_particle() for
        * each particle of a filtered body (properties @p prop), then
-       * finish_cell() per filtered body: it solves, writes the projected
-       * stresses back (unless force only) and returns what filter_cell()
-       * would have.
+       * finish_cell() per filtered body with particles in the cell: it
+       * solves, writes the projected stresses back (unless force only) and
+       * says whether the field is the full one, the constant fallback or
+       * left unchanged (nothing to project onto).
        */
       void
       begin_cell(const dealii::Tensor<2, dim> &J0);
@@ -141,7 +127,7 @@ namespace mpm
         return fields[b];
       }
 
-      /// The projection (and field) filter_cell() last used for body b.
+      /// The projection (and field) of body b's last cell.
       const AssumedStressProjection<dim> &
       projection(const unsigned int b) const
       {
@@ -157,11 +143,6 @@ namespace mpm
       unsigned int n_fallbacks = 0;
 
     private:
-      Result
-      project(const dealii::Tensor<2, dim> &J0,
-              const unsigned int            b,
-              double                       *beta);
-
       /// Make projections[b] the projection of a cell with Jacobian J0.
       void
       use_geometry(const dealii::Tensor<2, dim> &J0, const unsigned int b);
@@ -180,13 +161,11 @@ namespace mpm
       std::vector<std::unique_ptr<AssumedStressProjection<dim>>> projections;
       std::vector<char> enriched;   ///< Filter field = enriched, per body
       std::vector<char> write_back; ///< not Filtered stress = force only
-      std::vector<dealii::Tensor<2, dim>>      last_J0;
-      std::vector<StressSample<dim>>           samples;
+      std::vector<dealii::Tensor<2, dim>> last_J0;
       /// The fused projection's sums of the current cell, per body.
       std::vector<typename AssumedStressProjection<dim>::Moments> sums;
       std::vector<typename AssumedStressProjection<dim>::CartesianField>
         fields; ///< of the last finish_cell(), per body
-      std::vector<double *>                    targets;
       std::vector<const materials::Material *> material;
       std::vector<unsigned int>                n_history; ///< per body
       /// Poisson's ratio for the out-of-plane stress of plane strain, or
@@ -203,25 +182,23 @@ namespace mpm
                                    double              *beta)
     {
       using L = ParticleLayout<dim>;
-      samples.clear();
-      targets.clear();
-      const bool by_mass = metric[b] == Metric::mass;
+      if constexpr (dim > 1)
+        {
+          use_geometry(J0, b);
+          sums[b].clear();
+        }
+      bool any = false;
       for (auto &p : particles_in_cell)
         {
-          double *prop = p.get_properties().data();
+          const double *prop = p.get_properties().data();
           if (static_cast<unsigned int>(prop[L::body]) != b)
             continue;
-          StressSample<dim> s;
-          s.xi            = p.get_reference_location();
-          s.weight        = by_mass ? prop[L::mass] : prop[L::volume];
-          const auto full = load_stress(prop + L::stress);
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = i; j < dim; ++j)
-              s.stress[i][j] = full[i][j];
-          samples.push_back(s);
-          targets.push_back(prop);
+          add_particle(b, p.get_reference_location(), prop);
+          any = true;
         }
-      return project(J0, b, beta);
+      if (!any)
+        return Result::unchanged;
+      return finish_cell(particles_in_cell, b, beta);
     }
 
     template <int dim>
