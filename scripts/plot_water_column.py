@@ -4,7 +4,8 @@ the surge front Z(T) and the height at the wall H(tau) of the runs against
 Martin & Moyce (1952) (also h = a/10 and a/40 if the grid study was run),
 and the particles coloured by the pressure
 p / (rho g 2a) at the output nearest T = 2 (or the last output of a run
-that stopped before), without and with theta-bar.
+that stopped before), without and with theta-bar (cell, and node if
+that run is there).
 Usage: plot_water_column.py STUDY_DIR OUT.png"""
 import glob
 import os
@@ -18,18 +19,22 @@ import numpy as np
 import pandas as pd
 
 from water_column_rms import (A, H_DATA, T_DATA, T_SNAPSHOT, TAU_DATA, Z_DATA,
-                              statistics)
+                              cell_pressure, checkerboard_measures, statistics)
 
 study, out = sys.argv[1], sys.argv[2]
-runs = [("standard", "standard MPM"), ("theta-bar", "theta-bar (cell)")]
+runs = [(run, label) for run, label in
+        [("standard", "standard MPM"), ("theta-bar", "theta-bar (cell)"),
+         ("theta-bar-node", "theta-bar (node)")]
+        if os.path.exists(f"{study}/{run}/statistics.txt")]
 rho, g = 1000.0, 9.81
 
-fig = plt.figure(figsize=(14, 8.5))
-grid = fig.add_gridspec(2, 2, height_ratios=[1.4, 1])
-ax_z, ax_h = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
+# top: the two curves side by side; bottom: one pressure panel per run
+fig = plt.figure(figsize=(7 * max(2, len(runs)), 8.5))
+grid = fig.add_gridspec(2, 6, height_ratios=[1.4, 1])
+ax_z, ax_h = fig.add_subplot(grid[0, :3]), fig.add_subplot(grid[0, 3:])
 ax_z.plot(T_DATA, Z_DATA, "ko", label="Martin & Moyce 1952")
 ax_h.plot(TAU_DATA, H_DATA, "ko", label="Martin & Moyce 1952")
-for (run, label), style in zip(runs, ["-", "--"]):
+for (run, label), style in zip(runs, ["-", "--", "-"]):
     s = statistics(f"{study}/{run}")
     ax_z.plot(s["T"], s["Z"], style, label=label)
     ax_h.plot(s["tau"], s["H"], style, label=label)
@@ -48,17 +53,20 @@ ax_z.legend(fontsize=8)
 ax_h.legend(fontsize=8)
 
 for i, (run, label) in enumerate(runs):
-    ax = fig.add_subplot(grid[1, i])
+    w = 6 // len(runs)
+    ax = fig.add_subplot(grid[1, i * w:(i + 1) * w])
     s = statistics(f"{study}/{run}")
     k = int((s["T"] - T_SNAPSHOT).abs().idxmin())
-    d = pd.read_csv(sorted(glob.glob(f"{study}/{run}/particles-*.csv"))[k])
+    table = sorted(glob.glob(f"{study}/{run}/particles-*.csv"))[k]
+    d = pd.read_csv(table)
+    mode = checkerboard_measures(cell_pressure(f"{study}/{run}", table))[1]
     p = -(d.stress_xx + d.stress_yy + d.stress_zz) / 3 / (rho * g * 2 * A)
     sc = ax.scatter(d.x / A, d.y / A, c=p, s=4, cmap="viridis",
                     vmin=-0.2, vmax=1.2)
     ax.set_aspect("equal")
     ax.set(xlim=(0, 4.6), ylim=(0, 2.1), xlabel="x / a", ylabel="y / a",
            title=f"{label}: p / (rho g 2a) at T = {s['T'][k]:.2f}\n"
-                 f"checkerboard {s.checkerboard[k]:.3f}")
+                 f"checkerboard {s.checkerboard[k]:.3f}, its 2x2 mode {mode:.3f}")
     fig.colorbar(sc, ax=ax, fraction=0.025, pad=0.02)
 fig.suptitle("Water column collapse, h = a/20, 2x2 particles per cell "
              "(scripts/water_column_study.sh)")

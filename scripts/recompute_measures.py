@@ -126,10 +126,11 @@ def wmean(w, e, de):
     return (w * e).sum() / w.sum(), (w * de).sum() / w.sum()
 
 
-def checkerboard(p, dim, grid, error, derror):
-    """RMS over face-neighbouring cell pairs with particles of the jump of
-    the volume-averaged error (source/benchmarks/checkerboard.cc), its
-    rounding bound, and the number of particles on a cell face."""
+def cell_averages(p, dim, grid, error, derror):
+    """The volume-averaged error of each cell of a box grid (nan where no
+    particle is), its rounding bound, whether the cell has particles (all
+    shaped as the grid, x first) and the number of particles on a cell
+    face (whose cell is ambiguous)."""
     lo, h, n = grid
     axes = "xyz"[:dim]
     idx, on_face = [], np.zeros(len(p), bool)
@@ -148,6 +149,14 @@ def checkerboard(p, dim, grid, error, derror):
     e = np.where(has, se / np.where(has, sv, 1), np.nan)
     de = np.where(has, sd / np.where(has, sv, 1), np.nan)
     e, de, has = (x.reshape(n) for x in (e, de, has))
+    return e, de, has, int(on_face.sum())
+
+
+def checkerboard(p, dim, grid, error, derror):
+    """RMS over face-neighbouring cell pairs with particles of the jump of
+    the volume-averaged error (source/benchmarks/checkerboard.cc), its
+    rounding bound, and the number of particles on a cell face."""
+    e, de, has, on_face = cell_averages(p, dim, grid, error, derror)
     jumps, bounds = [], []
     for d in range(dim):
         a = [slice(None)] * dim
@@ -158,10 +167,10 @@ def checkerboard(p, dim, grid, error, derror):
         bounds.append((de[tuple(a)] + de[tuple(b)])[both])
     j, bj = np.concatenate(jumps), np.concatenate(bounds)
     if len(j) == 0:
-        return 0.0, 0.0, int(on_face.sum())
+        return 0.0, 0.0, on_face
     # plus the round-off of the cell averages (a difference of two of them)
     roundoff = 1e-12 * np.nanmax(np.abs(e))
-    return np.sqrt((j * j).mean()), np.sqrt((bj * bj).mean()) + roundoff, int(on_face.sum())
+    return np.sqrt((j * j).mean()), np.sqrt((bj * bj).mean()) + roundoff, on_face
 
 
 def polar(x, y, px, py):
@@ -310,10 +319,63 @@ def manufactured_solution(p, t, run):
             "u_max_error": (np.sqrt(e2.max()) / G, np.sqrt(de2.max()) / G)}
 
 
+def cooks_membrane(p, t, run):
+    F, uy_ref, uy_ref_mid, r_fit = need(run.c, "F", "uy_ref", "uy_ref_mid", "r_fit")
+    X, Y, y = p.X_x.values, p.X_y.values, p.y.values
+    uy, duy = y - Y, u(y) + u(Y)
+
+    def fitted(x0, y0):
+        """u_y at (x0, y0) of the least-squares plane through the particles
+        with X within r_fit, as the benchmark fits it; its bound is the sum
+        of |d a / d u_y,i| times the rounding of u_y,i (a is linear in u_y)."""
+        near = np.hypot(X - x0, Y - y0) <= r_fit
+        phi = np.column_stack([np.ones(near.sum()), X[near] - x0, Y[near] - y0])
+        if len(phi) < 3:
+            return (math.nan, 0.0)
+        A = phi.T @ phi
+        if abs(np.linalg.det(A)) <= 1e-10 * (A[0, 0] * r_fit**2) ** 2:
+            return (math.nan, 0.0)
+        row = np.linalg.solve(A, np.eye(3)[0]) @ phi.T  # d a / d u_y
+        return (float(row @ uy[near]), float(np.abs(row) @ duy[near]))
+
+    corner, mid = fitted(48.0, 60.0), fitted(48.0, 52.0)
+    # the nearest particle to the corner (by X; the first of a tie)
+    k = int(np.argmin(np.hypot(X - 48.0, Y - 60.0)))
+    return {"uy_corner": corner, "uy_mid": mid,
+            "corner_ratio": (corner[0] / (F * uy_ref), corner[1] / abs(F * uy_ref)),
+            "mid_ratio": (mid[0] / (F * uy_ref_mid), mid[1] / abs(F * uy_ref_mid)),
+            "corner_nearest_ratio": (uy[k] / (F * uy_ref), duy[k] / abs(F * uy_ref))}
+
+
+def water_column(p, t, run):
+    a, g, rho = need(run.c, "a", "g", "rho")
+    x, y, V = p.x.values, p.y.values, p.volume.values
+    half, dhalf = 0.5 * np.sqrt(V), 0.25 * u(V) / np.sqrt(V)
+    front = x + half
+    k = int(np.argmax(front))
+    wall = x < a / 10  # the benchmark's wall band
+    top = y[wall] + half[wall]
+    height = (top.max(), (u(y) + dhalf)[wall][np.argmax(top)]) if wall.any() else (0.0, 0.0)
+    front = (front[k], u(x)[k] + dhalf[k])
+    speed = np.hypot(p.v_x.values, p.v_y.values)
+    out = {"x_front": front, "height": height,
+           "Z": (front[0] / a, front[1] / a),
+           "H": (height[0] / (2 * a), height[1] / (2 * a)),
+           "max_speed": (speed.max(), (u(p.v_x.values) + u(p.v_y.values))[np.argmax(speed)])}
+    if run.grid is not None:
+        pm, dpm = pressure(p)
+        cb, dcb, run.on_face = checkerboard(p, run.dim, run.grid, pm + rho * g * y,
+                                            dpm + rho * g * u(y))
+        head = rho * g * 2 * a
+        out["checkerboard"] = (cb / head, dcb / head)
+    return out
+
+
 MEASURES = {"axial bar": axial_bar, "convecting bar": convecting_bar,
             "cantilever": cantilever, "spinning disk": spinning_disk,
             "self-weight column": self_weight_column, "thick cylinder": thick_cylinder,
-            "manufactured solution": manufactured_solution}
+            "manufactured solution": manufactured_solution, "cooks membrane": cooks_membrane,
+            "water column": water_column}
 
 
 def upward_crossings(t, v, dv):

@@ -27,7 +27,7 @@
 #   cooks_membrane  scripts/cooks_membrane_study.sh + plot (section 7)
 #                   (a) 21 runs at h = 4, 2, 1; (b) 14 runs at h = 4
 #                   and 2 and 3 at h = 1                           ~50 min
-#   water_column    scripts/water_column_study.sh + plot (section 6) ~1.5 min
+#   water_column    scripts/water_column_study.sh + plot (section 6) ~2.5 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                ~1-3 min
 # Full suite: about 145 minutes; the spinning disk is most of it. QUICK=1 (coarse grids, short runs, few variants) takes a few
@@ -206,12 +206,6 @@ part_recompute() {
     [ -f "$dir/parameters.prm" ] || continue
     ls "$dir"/particles-*.csv > /dev/null 2>&1 || continue
     grep -q "^set Benchmark *= *none" "$dir/parameters.prm" && continue
-    # not yet in recompute_measures.py: their own scripts recompute them
-    # (water_column_rms.py --check-csv, cooks_membrane_fit_check.py)
-    if grep -qE "^set Benchmark *= *(water column|cooks membrane)" "$dir/parameters.prm"; then
-      echo "skip  ${dir#$root/}: checked by its own script"
-      continue
-    fi
     n=$((n + 1))
     if $py "$root/scripts/recompute_measures.py" "$dir" > "$dir/recompute.txt" 2>&1; then
       echo "ok    ${dir#$root/}: $(tail -2 "$dir/recompute.txt" | head -1)"

@@ -18,14 +18,24 @@ With --check-csv the front and height are recomputed from the particle
 CSV files (x + sqrt(V)/2) and the largest difference to statistics.txt is
 printed.
 
-Usage: water_column_rms.py [--check-csv] [--c SOUND_SPEED] RUN_DIR... """
+With --modes it prints instead, from the particle CSV files, the
+checkerboard recomputed (RMS jump of the cells' p + rho g y between face
+neighbours) and its checkerboard-mode part (RMS over 2x2 blocks of
+(p00 - p10 - p01 + p11)/4, zero for any bilinear field), both in units of
+rho g 2a, as means over T <= 3.4 and at T = 2.
+
+Usage: water_column_rms.py [--check-csv] [--c SOUND_SPEED] RUN_DIR...
+       water_column_rms.py --modes RUN_DIR..."""
 import glob
 import sys
 
 import numpy as np
 import pandas as pd
 
+from recompute_measures import box_grid, cell_averages, read_prm
+
 A = 0.05715
+RHO, G = 1000.0, 9.81
 # Martin & Moyce 1952, BENCHMARKS.md section 6
 T_DATA = np.array([0.41, 0.84, 1.19, 1.43, 1.63, 1.83, 1.98, 2.20, 2.32,
                    2.51, 2.65, 2.83, 2.98, 3.11, 3.33])
@@ -79,7 +89,50 @@ def check_csv(run, s):
     return worst
 
 
+def cell_pressure(run, f):
+    """The cells' volume-averaged p + rho g y of one particle table, on the
+    run's box grid, as an (ny, nx) array (nan: no particle)."""
+    d = pd.read_csv(f)
+    p = -(d.stress_xx + d.stress_yy + d.stress_zz).values / 3 + RHO * G * d.y.values
+    grid = box_grid(read_prm(f"{run}/parameters.prm"), 2)
+    return cell_averages(d, 2, grid, p, 0 * p)[0].T
+
+
+def checkerboard_measures(P):
+    """(jump, mode) in units of rho g 2a. jump: the RMS of the pressure jump
+    between face-neighbouring filled cells (the statistics' checkerboard,
+    recomputed); mode: the RMS over the 2x2 blocks of filled cells of the
+    checkerboard component (p00 - p10 - p01 + p11)/4, which is zero for
+    any bilinear field, so smooth pressure variation does not count."""
+    jumps = np.concatenate([(P[:, 1:] - P[:, :-1]).ravel(), (P[1:, :] - P[:-1, :]).ravel()])
+    jumps = jumps[np.isfinite(jumps)]
+    mode = (P[:-1, :-1] - P[1:, :-1] - P[:-1, 1:] + P[1:, 1:]) / 4
+    mode = mode[np.isfinite(mode)]
+    scale = RHO * G * 2 * A
+    return np.sqrt(np.mean(jumps**2)) / scale, np.sqrt(np.mean(mode**2)) / scale
+
+
+def checkerboard_modes(run, s):
+    """The mean of both measures over the particle tables with T <= 3.4,
+    and both at the table nearest T = 2."""
+    files = sorted(glob.glob(f"{run}/particles-*.csv"))
+    rows = [(s["T"][k],) + checkerboard_measures(cell_pressure(run, f))
+            for k, f in enumerate(files) if s["T"][k] <= 3.4]
+    r = np.array(rows)
+    k = int(np.argmin(np.abs(r[:, 0] - T_SNAPSHOT)))
+    return r[:, 1].mean(), r[:, 2].mean(), r[k, 1], r[k, 2]
+
+
 def main(argv):
+    if "--modes" in argv:
+        # the checkerboard recomputed from the particle tables, and its
+        # component orthogonal to bilinear fields
+        print("| run | jump, mean T<=3.4 | mode, mean T<=3.4 | jump at T=2 | mode at T=2 |")
+        print("|---|---|---|---|---|")
+        for run in [a for a in argv if a != "--modes"]:
+            r = checkerboard_modes(run, statistics(run))
+            print(f"| {run.rstrip('/').split('/')[-1]} | " + " | ".join(f"{v:.4f}" for v in r) + " |")
+        return
     check = "--check-csv" in argv
     argv = [a for a in argv if a != "--check-csv"]
     c = None

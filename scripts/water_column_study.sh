@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Water column collapse (BENCHMARKS.md section 6, prm/water_column.prm):
-# runs the case with standard MPM and with the cell theta-bar
-# (Volumetric smoothing = cell), one after the other on one core, keeps
+# runs the case with standard MPM and with the cell and node theta-bar
+# (Volumetric smoothing = cell, node), one after the other on one core, keeps
 # each run's output in OUT/<variant>/ and its screen output in
 # OUT/<variant>.log, writes OUT/table.md (scripts/water_column_rms.py:
 # RMS of Z and H against Martin & Moyce, checkerboard, largest speed, wall
@@ -10,17 +10,20 @@
 # With the second argument "grid" it also runs standard MPM on h = a/10
 # (to the end) and h = a/40 (to t = 0.19 s, T = 3.5: the front data only;
 # about 3 minutes) into OUT/standard_h10, OUT/standard_h40.
+# Variants: standard, theta-bar (Volumetric smoothing = cell) and
+# theta-bar-node (= node); VARIANTS="..." runs a subset.
 # Usage: scripts/water_column_study.sh [OUT] [grid]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-results/water_column}")
-variants="standard theta-bar"
+variants=${VARIANTS:-standard theta-bar theta-bar-node}
 [ "${2:-}" = grid ] && variants="$variants standard_h10 standard_h40"
 mkdir -p "$out"
 : > "$out/times.txt"
 for variant in $variants; do
   smoothing=none
   [ $variant = theta-bar ] && smoothing=cell
+  [ $variant = theta-bar-node ] && smoothing=node
   # cells per a (20 in the parameter file) and end time
   n=20; end=0.57
   [ $variant = standard_h10 ] && n=10
