@@ -12,6 +12,7 @@
 # Run it on an otherwise idle machine.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+mpm=${MPM:-$root/build/mpm} # MPM=...: another build, for A/B runs
 cells=${1:-256}
 variant=${2:-standard}
 ranks=${3:-1 2}
@@ -50,7 +51,7 @@ end
 PRM
 cd "$work"
 for np in $ranks; do
-  mpirun -np $np "$root/build/mpm" case.prm > log.$np
+  mpirun -np $np "$mpm" case.prm > log.$np
   echo "$variant, ranks $np, ${cells}^2 block: $(sed -n 's/^  particles: //p' log.$np) particles"
   grep -E "time loop:|memory:|load balancing:" log.$np
 done

@@ -305,6 +305,14 @@ namespace mpm
         "What happens when a particle domain reaches outside the grid: "
         "error stops with a message naming the particle; clamp cuts GIMP "
         "boxes at the grid boundary and moves CPDI corners onto it.");
+      prm.declare_entry(
+        "Cache stencils",
+        "true",
+        Patterns::Bool(),
+        "GIMP, CPDI, CPDI2: build each particle's stencil once per step and "
+        "keep it for the step's later passes (G2P, the stress update), at "
+        "about 300 bytes per particle in 2D and 1 KB in 3D; false builds it "
+        "in every pass (less memory, slower).");
       prm.leave_subsection();
     }
 
@@ -312,8 +320,9 @@ namespace mpm
     ShapeFunctions::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Shape functions");
-      family = shape_functions::parse_family(prm.get("Family"));
-      clamp  = prm.get("Domain outside the grid") == "clamp";
+      family         = shape_functions::parse_family(prm.get("Family"));
+      clamp          = prm.get("Domain outside the grid") == "clamp";
+      cache_stencils = prm.get_bool("Cache stencils");
       prm.leave_subsection();
     }
 

@@ -16,11 +16,13 @@ namespace mpm
       const BackgroundGrid<dim> &grid,
       const Family               family,
       const bool                 clamp,
-      const unsigned int         corner_offset)
+      const unsigned int         corner_offset,
+      const bool                 cache_stencils)
       : grid(grid)
       , which(family)
       , clamp(clamp)
       , corner_offset(corner_offset)
+      , cache_on(cache_stencils)
     {}
 
     template <int dim>

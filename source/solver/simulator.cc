@@ -87,7 +87,8 @@ namespace mpm
           background,
           params.shape_functions.family,
           params.shape_functions.clamp,
-          layout.corners());
+          layout.corners(),
+          params.shape_functions.cache_stencils);
     initialize_nodal_vectors();
     benchmark =
       benchmarks::create_benchmark<dim>(params.benchmark, params.constants);
@@ -561,6 +562,10 @@ namespace mpm
     last_dt = dt;
     if (balancer && balancer->due(current_step))
       repartition();
+    // The particles moved (and may have changed cells or ranks) since the
+    // stencils were built.
+    if (domain_functions)
+      domain_functions->forget_stencils();
     if (params.time.scheme == Scheme::usf)
       {
         particle_to_grid(P2GContent::mass_momentum);
@@ -586,6 +591,8 @@ namespace mpm
         const bool new_domains =
           domain_functions && (domain_functions->family() == Family::cpgimp ||
                                domain_functions->family() == Family::cpdi);
+        if (new_domains)
+          domain_functions->forget_stencils();
         particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
                                        P2GContent::force);
         update_grid(dt);

@@ -85,6 +85,7 @@ namespace mpm
                              const auto          &geo,
                              const unsigned int  *nodes,
                              const unsigned int   cell_index,
+                             const unsigned int   ordinal,
                              const double        *prop,
                              StepKinematics<dim> &k) {
       if (!domains)
@@ -98,7 +99,7 @@ namespace mpm
         }
       if (any_node) // the node average's Q1 values
         geo.values(p.get_reference_location(), N);
-      if (!domains->evaluate(cell_index, p, stencil, result.error))
+      if (!domains->evaluate(cell_index, ordinal, p, stencil, result.error))
         return false;
       k = step_kinematics<dim>(transfer::velocity_gradient<dim>(in, stencil),
                                prop,
@@ -113,18 +114,27 @@ namespace mpm
         NodalVector &sums = *volume_scratch;
         sums              = 0.;
         double *out       = sums.begin();
+        if (domains)
+          domains->begin_pass(particles.n_locally_owned_particles());
         for_each_cell_with_particles(
           grid, particles, [&](const auto &cell, const auto &pic) {
             const auto         &geo   = grid.geometry(cell);
             const unsigned int *nodes = grid.nodes(cell);
+            unsigned int        next  = 0; // the particle's place in the cell
             for (const auto &p : pic)
               {
-                const double *prop = p.get_properties().data();
+                const unsigned int ordinal = next++;
+                const double      *prop    = p.get_properties().data();
                 if (smoothing[body_of(prop)] != Smoothing::node)
                   continue;
                 StepKinematics<dim> k;
-                if (!kinematics_of(
-                      p, geo, nodes, cell->active_cell_index(), prop, k))
+                if (!kinematics_of(p,
+                                   geo,
+                                   nodes,
+                                   cell->active_cell_index(),
+                                   ordinal,
+                                   prop,
+                                   k))
                   continue;
                 const auto &[grad_v, F] = k;
                 const double J          = determinant(F);
@@ -138,6 +148,8 @@ namespace mpm
                   }
               }
           });
+        if (domains)
+          domains->end_pass(result.error.empty());
         sums.compress(VectorOperation::add);
         sums.update_ghost_values();
       }
@@ -225,6 +237,8 @@ namespace mpm
     const double *const         volume_sums =
       any_node ? volume_scratch->begin() : nullptr;
 
+    if (domains)
+      domains->begin_pass(particles.n_locally_owned_particles());
     for_each_cell_with_particles(
       grid, particles, [&](const auto &cell, const auto &pic) {
         const auto         &geo   = grid.geometry(cell);
@@ -233,12 +247,18 @@ namespace mpm
         if (!any_cell && !any_node)
           {
             // no smoothing: one pass
+            unsigned int ordinal = 0;
             for (auto &p : pic)
               {
                 double             *prop = p.get_properties().data();
                 StepKinematics<dim> k;
-                if (!kinematics_of(
-                      p, geo, nodes, cell->active_cell_index(), prop, k))
+                if (!kinematics_of(p,
+                                   geo,
+                                   nodes,
+                                   cell->active_cell_index(),
+                                   ordinal++,
+                                   prop,
+                                   k))
                   continue;
                 const auto &[grad_v, F] = k;
                 store_matrix<dim>(F, prop + L::F);
@@ -250,12 +270,13 @@ namespace mpm
         buffer.clear();
         if (any_cell)
           std::fill(cell_sums.begin(), cell_sums.end(), CellVolumeSums());
+        unsigned int ordinal = 0;
         for (auto &p : pic)
           {
             double             *prop = p.get_properties().data();
             StepKinematics<dim> k;
             if (!kinematics_of(
-                  p, geo, nodes, cell->active_cell_index(), prop, k))
+                  p, geo, nodes, cell->active_cell_index(), ordinal++, prop, k))
               {
                 // keep the cell average's bookkeeping in step
                 if (smoothing[body_of(prop)] == Smoothing::cell)
@@ -326,6 +347,8 @@ namespace mpm
             update_particle(p, prop, h, grad_v, F);
           }
       });
+    if (domains)
+      domains->end_pass(result.error.empty());
     return result;
   }
 

@@ -37,13 +37,15 @@ namespace mpm
       const double                 *in = kinematics.begin();
       std::string                   error;
       shape_functions::Stencil<dim> st;
+      domains.begin_pass(particles.n_locally_owned_particles());
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
-          const unsigned int index = cell->active_cell_index();
+          const unsigned int index   = cell->active_cell_index();
+          unsigned int       ordinal = 0;
           for (auto &p : pic)
             {
               double *prop = p.get_properties().data();
-              if (!domains.evaluate(index, p, st, error))
+              if (!domains.evaluate(index, ordinal++, p, st, error))
                 continue;
               double v_grid[dim] = {}, dv[dim] = {};
               for (unsigned int k = 0; k < st.n; ++k)
@@ -82,6 +84,7 @@ namespace mpm
                 }
             }
         });
+      domains.end_pass(error.empty());
       if (remap)
         remap->compress(VectorOperation::add);
       return error;

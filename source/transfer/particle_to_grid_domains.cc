@@ -50,6 +50,7 @@ namespace mpm
       // projected field (filter->cartesian_field) gives its stresses.
       std::vector<char> by_field(bodies.size(), 0);
 
+      domains.begin_pass(particles.n_locally_owned_particles());
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
           if constexpr (dim > 1)
@@ -70,11 +71,12 @@ namespace mpm
                       filters::StressFilter<dim>::Result::unchanged &&
                     !filter->writes_back(b);
               }
-          const unsigned int index = cell->active_cell_index();
+          const unsigned int index   = cell->active_cell_index();
+          unsigned int       ordinal = 0;
           for (const auto &p : pic)
             {
               const double *prop = p.get_properties().data();
-              if (!domains.evaluate(index, p, st, error))
+              if (!domains.evaluate(index, ordinal++, p, st, error))
                 continue;
               const double   m = prop[L::mass];
               Tensor<2, dim> sigma;
@@ -146,6 +148,7 @@ namespace mpm
                   }
             }
         });
+      domains.end_pass(error.empty());
       nodal.compress(VectorOperation::add);
       return error;
     }

@@ -89,6 +89,8 @@ namespace mpm
     {
       shape_functions::Family family = shape_functions::Family::standard;
       bool                    clamp  = false; ///< domains cut at the grid
+      /// Keep each step's domain stencils for the later passes of the step
+      bool cache_stencils = true;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -5,6 +5,7 @@
 #include <mpm/grid/background_grid.h>
 #include <mpm/shape_functions/cpdi.h>
 #include <mpm/shape_functions/family.h>
+#include <mpm/shape_functions/stencil_cache.h>
 
 #include <string>
 
@@ -47,12 +48,14 @@ namespace mpm
        * there and averaged over the part inside; CPDI corners outside are
        * moved to the boundary) instead of reporting outside_grid.
        * @p corner_offset: where CPDI2's corners start in the particle
-       * properties (ParticleLayout::corners()).
+       * properties (ParticleLayout::corners()). @p cache_stencils: keep
+       * each step's stencils (StencilCache).
        */
       DomainShapeFunctions(const BackgroundGrid<dim> &grid,
                            const Family               family,
                            const bool                 clamp,
-                           const unsigned int         corner_offset);
+                           const unsigned int         corner_offset,
+                           const bool                 cache_stencils = false);
 
       Family
       family() const
@@ -84,26 +87,63 @@ namespace mpm
                CornerWeights<dim>       *corners = nullptr) const;
 
       /**
-       * evaluate() for a particle of deal.II's ParticleHandler in the
-       * cell with active index @p cell; on failure sets @p error (if still
-       * empty) to message() and returns false.
+       * evaluate() for a particle of deal.II's ParticleHandler, the
+       * @p ordinal-th of the cell with active index @p cell; on failure
+       * sets @p error (if still empty) to message() and returns false.
+       * With the cache on, the step's stencil is built once (by the first
+       * pass between begin_pass() and end_pass()) and read back after.
        */
       template <typename Particle>
       bool
       evaluate(const unsigned int cell,
+               const unsigned int ordinal,
                const Particle    &p,
                Stencil<dim>      &stencil,
                std::string       &error) const
       {
+        if (cache_on && cache.load(cell, ordinal, p.get_id(), stencil))
+          return true;
         const Status status = evaluate(cell,
                                        p.get_reference_location(),
                                        p.get_properties().data(),
                                        stencil);
         if (status == Status::ok)
-          return true;
+          {
+            if (cache_on)
+              cache.store(cell, ordinal, p.get_id(), stencil);
+            return true;
+          }
         if (error.empty())
           error = message(status, p.get_id(), p.get_location());
         return false;
+      }
+
+      /// Around every pass over the @p n_particles locally owned particles
+      /// that evaluates stencils (@p ok: no evaluation failed).
+      void
+      begin_pass(const std::size_t n_particles) const
+      {
+        if (cache_on)
+          cache.begin_pass(grid.triangulation().n_active_cells(), n_particles);
+      }
+      void
+      end_pass(const bool ok) const
+      {
+        cache.end_pass(ok);
+      }
+
+      /// The domains or the particles' cells changed: build anew.
+      void
+      forget_stencils()
+      {
+        cache.forget();
+      }
+
+      /// Bytes held by the stencil cache.
+      std::size_t
+      memory_consumption() const
+      {
+        return cache.memory_consumption();
       }
 
       /**
@@ -149,6 +189,9 @@ namespace mpm
       const Family               which;
       const bool                 clamp;
       const unsigned int         corner_offset;
+      const bool                 cache_on;
+      /// This step's stencils: a memo, filled by whichever pass comes first.
+      mutable StencilCache<dim> cache;
     };
   } // namespace shape_functions
 } // namespace mpm

@@ -10,8 +10,8 @@
 #include <mpm/filters/convection_correction.h>
 #include <mpm/filters/stress_filter.h>
 #include <mpm/grid/background_grid.h>
-#include <mpm/io/checkpoint.h>
 #include <mpm/grid/load_balancer.h>
+#include <mpm/io/checkpoint.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
 #include <mpm/parameters/parameters.h>
@@ -128,6 +128,12 @@ namespace mpm
     get_bodies() const
     {
       return bodies;
+    }
+    /// The particle-domain family's weights (null for standard MPM).
+    const shape_functions::DomainShapeFunctions<dim> *
+    domain_shape_functions() const
+    {
+      return domain_functions.get();
     }
 
     /// Whether setup() continued from a checkpoint.
