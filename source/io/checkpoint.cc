@@ -2,6 +2,7 @@
 #include <deal.II/grid/tria_iterator.h>
 
 #include <mpm/io/checkpoint.h>
+#include <mpm/io/durable_files.h>
 #include <mpm/io/output_writer.h>
 
 #include <cstdint>
@@ -217,9 +218,17 @@ namespace mpm
     commit(const std::string &output_directory, const std::string &folder)
     {
       const std::string dir = root(output_directory);
+      // Every file of the new checkpoint reaches the storage device before
+      // latest.txt names it, so a crash of the machine (not only of the
+      // process) leaves either the old or the complete new checkpoint.
+      for (const auto &entry : fs::recursive_directory_iterator(folder))
+        if (entry.is_regular_file())
+          flush_to_storage(entry.path().string());
+      flush_to_storage(folder);
+      flush_to_storage(dir);
       // The commit point: rename() replaces latest.txt atomically.
-      write_file_atomically(dir + "/latest.txt",
-                            fs::path(folder).filename().string() + "\n");
+      write_file_durably(dir + "/latest.txt",
+                         fs::path(folder).filename().string() + "\n");
       for (const auto &entry : fs::directory_iterator(dir))
         if (entry.is_directory() &&
             entry.path().filename() != fs::path(folder).filename())
@@ -255,8 +264,7 @@ namespace mpm
         return path.compare(0, prefix.size(), prefix) == 0;
       };
       return !(starts("Output/") || starts("Checkpointing/") ||
-               starts("Load balancing/") ||
-               path == "Time stepping/End time" ||
+               starts("Load balancing/") || path == "Time stepping/End time" ||
                path == "Time stepping/Maximum number of steps");
     }
 
