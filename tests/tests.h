@@ -68,6 +68,20 @@ namespace mpm_test
       }
   }
 
+  /// A check line without its value (for output that must be the same
+  /// whatever the round-off and the number of ranks); a failed check goes
+  /// to stderr with its value and stops the test (exit 1).
+  inline void
+  report(const bool ok, const std::string &what, const double value)
+  {
+    log() << (ok ? "OK   " : "FAIL ") << what << std::endl;
+    if (!ok)
+      {
+        std::cerr << "FAIL " << what << ": " << value << std::endl;
+        std::exit(1);
+      }
+  }
+
   /// check(|value| <= bound)
   inline void
   check_small(const std::string &what, const double value, const double bound)

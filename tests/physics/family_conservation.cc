@@ -15,6 +15,7 @@
 #include <set>
 
 #include "../tests.h"
+#include "colliding_blocks.h"
 
 namespace
 {
@@ -102,18 +103,6 @@ namespace
     return r;
   }
 
-  /// A line of the output, the same on any number of ranks; a failed
-  /// check also goes to stderr with its value and stops the test.
-  void
-  report(const bool ok, const std::string &what, const double value)
-  {
-    mpm_test::log() << (ok ? "OK   " : "FAIL ") << what << std::endl;
-    if (!ok)
-      {
-        std::cerr << "FAIL " << what << ": " << value << std::endl;
-        std::exit(1);
-      }
-  }
 } // namespace
 
 int
@@ -127,51 +116,9 @@ main(int argc, char **argv)
       for (const std::string flip : {"1", "0"})
         {
           mpm_test::Case<dim> c(
-            R"(
-set Number of bodies = 2
-subsection Grid
-  set Lower corner = 0, 0
-  set Upper corner = 1, 1
-  set Subdivisions = 16
-end
-subsection Shape functions
-  set Family = )" +
-              family +
-              R"(
-end
-subsection Time stepping
-  set Scheme = )" +
-              scheme +
-              R"(
-  set FLIP fraction = )" +
-              flip +
-              R"(
-end
-subsection Bodies
-  subsection Body 0
-    set Lower corner = 0.2, 0.3
-    set Upper corner = 0.48, 0.62
-    set Subdivisions = 4
-    set Particles per direction = 2
-    set Initial velocity = 1 - 3*(y - 0.46); 3*(x - 0.34)
-    set Initial stress = 1e3*x; -2e3*y*x; 500*x*y
-    subsection Material
-      set Model = linear elastic
-      set Density = 1000
-    end
-  end
-  subsection Body 1
-    set Lower corner = 0.52, 0.35
-    set Upper corner = 0.8, 0.65
-    set Subdivisions = 4
-    set Particles per direction = 2
-    set Initial velocity = -1; 0.2
-    subsection Material
-      set Model = neo-Hookean
-      set Density = 2000
-    end
-  end
-end)",
+            mpm_test::colliding_blocks("set Family = " + family,
+                                       "set Scheme = " + scheme +
+                                         "\nset FLIP fraction = " + flip),
             2);
           auto &sim = *c.simulator;
 
@@ -211,22 +158,27 @@ end)",
 
           const std::string tag =
             family + ", " + scheme + ", FLIP " + flip + ": ";
-          report(worst.ok, tag + "every P2G pass succeeds", 0);
-          report(worst.mass_error <= 1e-14,
-                 tag + "grid mass = particle mass in every step (1e-14)",
-                 worst.mass_error);
-          report(worst.momentum_error <= 1e-13,
-                 tag + "grid momentum = particle momentum in every step "
-                       "(1e-13)",
-                 worst.momentum_error);
-          report(s1.mass == s0.mass, tag + "particle mass unchanged", 0);
-          report(dp / p_scale <= 1e-12,
-                 tag + "momentum conserved over 20 steps (1e-12)",
-                 dp / p_scale);
-          report(f == shape_functions::Family::standard || n_ranks == 1 ||
-                   worst.reaching_ghosts > 0,
-                 tag + "on 2 ranks, domains reach the other rank's cells",
-                 worst.reaching_ghosts);
+          mpm_test::report(worst.ok, tag + "every P2G pass succeeds", 0);
+          mpm_test::report(worst.mass_error <= 1e-14,
+                           tag +
+                             "grid mass = particle mass in every step (1e-14)",
+                           worst.mass_error);
+          mpm_test::report(worst.momentum_error <= 1e-13,
+                           tag +
+                             "grid momentum = particle momentum in every step "
+                             "(1e-13)",
+                           worst.momentum_error);
+          mpm_test::report(s1.mass == s0.mass,
+                           tag + "particle mass unchanged",
+                           0);
+          mpm_test::report(dp / p_scale <= 1e-12,
+                           tag + "momentum conserved over 20 steps (1e-12)",
+                           dp / p_scale);
+          mpm_test::report(f == shape_functions::Family::standard ||
+                             n_ranks == 1 || worst.reaching_ghosts > 0,
+                           tag +
+                             "on 2 ranks, domains reach the other rank's cells",
+                           worst.reaching_ghosts);
           // the dynamics, to compare 1 and 2 ranks
           mpm_test::log() << tag << std::scientific << std::setprecision(6)
                           << "Ekin " << s0.kinetic_energy << " -> "

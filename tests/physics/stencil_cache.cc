@@ -14,6 +14,7 @@
 #include <map>
 
 #include "../tests.h"
+#include "colliding_blocks.h"
 
 namespace
 {
@@ -47,70 +48,16 @@ namespace
     return all;
   }
 
-  /// A line of the output, the same on any number of ranks (no values:
-  /// the round-off differs); a failed check goes to stderr with its value
-  /// and stops the test.
-  void
-  report(const bool ok, const std::string &what, const double value)
-  {
-    mpm_test::log() << (ok ? "OK   " : "FAIL ") << what << std::endl;
-    if (!ok)
-      {
-        std::cerr << "FAIL " << what << ": " << value << std::endl;
-        std::exit(1);
-      }
-  }
-
   std::string
   case_text(const std::string &family,
             const std::string &scheme,
             const bool         cache)
   {
-    return R"(
-set Number of bodies = 2
-subsection Grid
-  set Lower corner = 0, 0
-  set Upper corner = 1, 1
-  set Subdivisions = 16
-end
-subsection Shape functions
-  set Family = )" +
-           family + R"(
-  set Cache stencils = )" +
-           (cache ? "true" : "false") + R"(
-end
-subsection Time stepping
-  set Scheme = )" +
-           scheme + R"(
-end
-subsection Bodies
-  subsection Body 0
-    set Lower corner = 0.2, 0.3
-    set Upper corner = 0.48, 0.62
-    set Subdivisions = 4
-    set Particles per direction = 2
-    set Initial velocity = 1 - 3*(y - 0.46); 3*(x - 0.34)
-    set Initial stress = 1e3*x; -2e3*y*x; 500*x*y
-    subsection Material
-      set Model = linear elastic
-      set Density = 1000
-    end
-  end
-  subsection Body 1
-    set Lower corner = 0.52, 0.35
-    set Upper corner = 0.8, 0.65
-    set Subdivisions = 4
-    set Particles per direction = 2
-    set Initial velocity = -1; 0.2
-    subsection Material
-      set Model = neo-Hookean
-      set Density = 2000
-    end
-    subsection Locking remedies
-      set Volumetric smoothing = node
-    end
-  end
-end)";
+    return mpm_test::colliding_blocks(
+      "set Family = " + family +
+        "\nset Cache stencils = " + (cache ? "true" : "false"),
+      "set Scheme = " + scheme,
+      "subsection Locking remedies\nset Volumetric smoothing = node\nend");
   }
 } // namespace
 
@@ -142,16 +89,17 @@ main(int argc, char **argv)
         for (unsigned int k = 0; k < 7; ++k)
           worst = std::max(worst, diff[k] / scale[k]);
         const std::string tag = family + ", " + scheme + ": ";
-        report(a.size() == b.size() && a.size() == 128,
-               tag + "the same 128 particles",
-               a.size());
-        report(worst <= 1e-12,
-               tag + "cached = rebuilt stencils (x, v, stress; 1e-12)",
-               worst);
+        mpm_test::report(a.size() == b.size() && a.size() == 128,
+                         tag + "the same 128 particles",
+                         a.size());
+        mpm_test::report(worst <= 1e-12,
+                         tag +
+                           "cached = rebuilt stencils (x, v, stress; 1e-12)",
+                         worst);
         const double held = Utilities::MPI::max(
           static_cast<double>(
             with.simulator->domain_shape_functions()->memory_consumption()),
           MPI_COMM_WORLD);
-        report(held > 0, tag + "the cache holds stencils", held);
+        mpm_test::report(held > 0, tag + "the cache holds stencils", held);
       }
 }
