@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Run a small serial case under valgrind's memcheck and print its summary.
+# Run a small case under valgrind's memcheck and print its summary.
 #
-# usage: scripts/valgrind_check.sh [CASE.prm]
+# usage: [NP=2] scripts/valgrind_check.sh [CASE.prm]
 #   CASE.prm  default: the base case of tests/ (2D, 64 particles on an 8 x 8
 #             grid, 5 steps) with vtu and csv output switched on
 # environment:
 #   MPM    the executable (default build/mpm next to this script)
+#   NP     MPI ranks (default 1): with NP > 1 every rank runs under its own
+#          memcheck (mpirun -np NP valgrind ... mpm), one log per rank
 #   LEAKS=1  also check leaks (--leak-check=full); leaks in our code count
 #            as errors, the third-party ones are suppressed by
 #            scripts/valgrind.supp
@@ -38,13 +40,21 @@ leak_args=(--leak-check=no)
 [ "${LEAKS:-0}" = 1 ] &&
   leak_args=(--leak-check=full --show-leak-kinds=definite,indirect
              --errors-for-leak-kinds=definite,indirect)
+np=${NP:-1}
+launcher=()
+[ "$np" -gt 1 ] && launcher=(mpirun -np "$np")
+export OMPI_MCA_rmaps_base_oversubscribe=1
 rc=0
-(cd "$work" && valgrind --tool=memcheck --error-exitcode=1 --num-callers=40 \
-   --track-origins=yes "${leak_args[@]}" \
+(cd "$work" && "${launcher[@]}" valgrind --tool=memcheck --error-exitcode=1 \
+   --num-callers=40 --track-origins=yes "${leak_args[@]}" \
    --suppressions="$root/scripts/valgrind.supp" \
-   "$mpm" "$case_file" > mpm_stdout.txt 2> valgrind.log) || rc=$?
-grep -E "ERROR SUMMARY|definitely lost|indirectly lost|suppressed:" \
-  "$work/valgrind.log" | sed 's/^==[0-9]*== *//'
-echo "full log: $work/valgrind.log"
+   --log-file=valgrind.%p.log \
+   "$mpm" "$case_file" > mpm_stdout.txt 2> mpm_stderr.txt) || rc=$?
+for log in "$work"/valgrind.*.log; do
+  echo "${log##*/}:"
+  grep -E "ERROR SUMMARY|definitely lost|indirectly lost|suppressed:" "$log" |
+    sed 's/^==[0-9]*== */  /'
+done
+echo "full logs: $work/valgrind.<pid>.log"
 [ $rc = 0 ] && echo "valgrind_check.sh: OK" || echo "valgrind_check.sh: FAIL (status $rc)"
 exit $rc
