@@ -7,9 +7,10 @@
 # RMS of Z and H against Martin & Moyce, checkerboard, largest speed, wall
 # time) and the figure doc/figures/water_column.png (or $PLOT)
 # (scripts/plot_water_column.py).
-# With the second argument "grid" it also runs standard MPM on h = a/10
-# (to the end) and h = a/40 (to t = 0.19 s, T = 3.5: the front data only;
-# about 3 minutes) into OUT/standard_h10, OUT/standard_h40.
+# With the second argument "grid" it also runs standard MPM and the node
+# theta-bar on h = a/10 (to the end) and h = a/40 (to t = 0.19 s, T = 3.5:
+# the front data only; about 5 minutes) into OUT/standard_h10,
+# OUT/standard_h40, OUT/theta-bar-node_h10, OUT/theta-bar-node_h40.
 # Variants: standard, theta-bar (Volumetric smoothing = cell) and
 # theta-bar-node (= node); VARIANTS="..." runs a subset.
 # Usage: scripts/water_column_study.sh [OUT] [grid]
@@ -17,17 +18,22 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-results/water_column}")
 variants=${VARIANTS:-standard theta-bar theta-bar-node}
-[ "${2:-}" = grid ] && variants="$variants standard_h10 standard_h40"
+[ "${2:-}" = grid ] &&
+  variants="$variants standard_h10 standard_h40 theta-bar-node_h10 theta-bar-node_h40"
 mkdir -p "$out"
 : > "$out/times.txt"
 for variant in $variants; do
-  smoothing=none
-  [ $variant = theta-bar ] && smoothing=cell
-  [ $variant = theta-bar-node ] && smoothing=node
+  case $variant in
+    theta-bar-node*) smoothing=node ;;
+    theta-bar*) smoothing=cell ;;
+    *) smoothing=none ;;
+  esac
   # cells per a (20 in the parameter file) and end time
   n=20; end=0.57
-  [ $variant = standard_h10 ] && n=10
-  [ $variant = standard_h40 ] && { n=40; end=0.19; }
+  case $variant in
+    *_h10) n=10 ;;
+    *_h40) n=40; end=0.19 ;;
+  esac
   dir="$out/$variant"
   cat > "$out/$variant.prm" <<PRM
 include $root/prm/water_column.prm
