@@ -121,3 +121,20 @@ BOOST_AUTO_TEST_CASE(failed_pass_and_forget_empty_it)
   BOOST_TEST(!cache.ready());
   BOOST_TEST(!cache.load(1, 0, 1, s));
 }
+
+BOOST_AUTO_TEST_CASE(merged_stencils_are_stored_as_given)
+{
+  StencilCache<2> cache;
+  Stencil<2>      s = sample(1), back;
+  s.n               = 3; // nodes 7, 3, 7: stored as given when merged
+  cache.begin_pass(10, 4);
+  cache.store(0, 0, 9, s, true);
+  cache.end_pass(true);
+  BOOST_TEST(cache.load(0, 0, 9, back));
+  BOOST_TEST(back.n == 3u);
+  for (unsigned int k = 0; k < 3; ++k)
+    {
+      BOOST_TEST(back.node[k] == s.node[k]);
+      BOOST_TEST(back.value[k] == s.value[k]);
+    }
+}

@@ -110,7 +110,7 @@ namespace mpm
         if (status == Status::ok)
           {
             if (cache_on)
-              cache.store(cell, ordinal, p.get_id(), stencil);
+              cache.store(cell, ordinal, p.get_id(), stencil, !is_gimp(which));
             return true;
           }
         if (error.empty())

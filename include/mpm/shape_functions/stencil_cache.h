@@ -119,13 +119,15 @@ namespace mpm
       /**
        * While filling: store the stencil @p s of particle @p id, the
        * @p ordinal-th of cell @p cell. Particles must come cell by cell in
-       * their order within the cell.
+       * their order within the cell. @p merged: s names each node once
+       * already (CPDI, CPDI2), so no merging is needed.
        */
       void
       store(const unsigned int                  cell,
             const unsigned int                  ordinal,
             const dealii::types::particle_index id,
-            const Stencil<dim>                 &s)
+            const Stencil<dim>                 &s,
+            const bool                          merged = false)
       {
         if (state != State::filling)
           return;
@@ -139,6 +141,14 @@ namespace mpm
           }
         ids.push_back(id);
         const std::size_t start = entries.size();
+        if (merged)
+          {
+            entries.resize(start + s.n);
+            for (unsigned int k = 0; k < s.n; ++k)
+              entries[start + k] = {s.node[k], s.value[k], s.gradient[k]};
+            first_entry.push_back(entries.size());
+            return;
+          }
         for (unsigned int k = 0; k < s.n; ++k)
           {
             std::size_t e = start;
