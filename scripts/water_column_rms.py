@@ -32,7 +32,7 @@ import sys
 import numpy as np
 import pandas as pd
 
-from recompute_measures import box_grid, cell_averages, read_prm
+from recompute_measures import Run, box_grid, cell_averages, read_prm, water_column
 
 A = 0.05715
 RHO, G = 1000.0, 9.81
@@ -78,14 +78,15 @@ def best_shift(s):
 
 
 def check_csv(run, s):
+    """The largest difference of front and height recomputed from the
+    particle CSV files (recompute_measures.water_column) to statistics.txt."""
+    case = Run()
+    case.c, case.dim, case.grid = {"a": A, "g": G, "rho": RHO}, 2, None
     worst = 0.0
     for k, f in enumerate(sorted(glob.glob(f"{run}/particles-*.csv"))):
-        d = pd.read_csv(f)
-        half = 0.5 * np.sqrt(d.volume)
-        front = (d.x + half).max()
-        wall = d.x < A / 10
-        height = (d.y[wall] + half[wall]).max() if wall.any() else 0.0
-        worst = max(worst, abs(front - s.x_front[k]), abs(height - s.height[k]))
+        m = water_column(pd.read_csv(f), s.time[k], case)
+        worst = max(worst, abs(m["x_front"][0] - s.x_front[k]),
+                    abs(m["height"][0] - s.height[k]))
     return worst
 
 

@@ -70,10 +70,16 @@ namespace mpm
     {
       for (unsigned int b = 0; b < is_filtered.size(); ++b)
         if (is_filtered[b])
-          {
-            use_geometry(J0, b);
-            sums[b].clear();
-          }
+          begin_body(J0, b);
+    }
+
+    template <int dim>
+    void
+    StressFilter<dim>::begin_body(const Tensor<2, dim> &J0,
+                                  const unsigned int    b)
+    {
+      use_geometry(J0, b);
+      sums[b].clear();
     }
 
     template <int dim>

@@ -1,9 +1,8 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include <mpm/io/atomic_files.h>
 #include <mpm/io/checkpoint.h>
-#include <mpm/io/durable_files.h>
-#include <mpm/io/output_writer.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -227,8 +226,9 @@ namespace mpm
       flush_to_storage(folder);
       flush_to_storage(dir);
       // The commit point: rename() replaces latest.txt atomically.
-      write_file_durably(dir + "/latest.txt",
-                         fs::path(folder).filename().string() + "\n");
+      write_file_atomically(dir + "/latest.txt",
+                            fs::path(folder).filename().string() + "\n",
+                            true);
       for (const auto &entry : fs::directory_iterator(dir))
         if (entry.is_directory() &&
             entry.path().filename() != fs::path(folder).filename())

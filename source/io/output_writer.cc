@@ -16,22 +16,6 @@ namespace mpm
 {
   using namespace dealii;
 
-  void
-  write_file_atomically(const std::string &file_name,
-                        const std::string &content)
-  {
-    const std::string tmp = file_name + ".tmp";
-    {
-      std::ofstream out(tmp);
-      out << content;
-      if (!out)
-        throw std::runtime_error("Cannot write the file '" + tmp + "'");
-    }
-    if (std::rename(tmp.c_str(), file_name.c_str()) != 0)
-      throw std::runtime_error("Cannot rename '" + tmp + "' to '" + file_name +
-                               "'");
-  }
-
   template <int dim>
   OutputWriter<dim>::OutputWriter(const MPI_Comm                  comm,
                                   const std::string              &directory,

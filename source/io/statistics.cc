@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <mpm/io/output_writer.h>
+#include <mpm/io/atomic_files.h>
 #include <mpm/io/statistics.h>
 #include <mpm/particles/particle_layout.h>
 

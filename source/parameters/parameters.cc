@@ -311,8 +311,8 @@ namespace mpm
         Patterns::Bool(),
         "GIMP, CPDI, CPDI2: build each particle's stencil once per step and "
         "keep it for the step's later passes (G2P, the stress update), at "
-        "about 300 bytes per particle in 2D and 1 KB in 3D; false builds it "
-        "in every pass (less memory, slower).");
+        "about 200 bytes per particle in 2D and 600 in 3D (CPDI); false "
+        "builds it in every pass (less memory, slower).");
       prm.leave_subsection();
     }
 

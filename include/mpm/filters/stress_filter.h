@@ -147,6 +147,10 @@ namespace mpm
       void
       use_geometry(const dealii::Tensor<2, dim> &J0, const unsigned int b);
 
+      /// begin_cell() for body b alone: its geometry, its sums cleared.
+      void
+      begin_body(const dealii::Tensor<2, dim> &J0, const unsigned int b);
+
       /// Replace the in-plane stress of the particle @p prop of body @p b
       /// by @p s (the material makes it admissible).
       void
@@ -182,11 +186,7 @@ namespace mpm
                                    double              *beta)
     {
       using L = ParticleLayout<dim>;
-      if constexpr (dim > 1)
-        {
-          use_geometry(J0, b);
-          sums[b].clear();
-        }
+      begin_body(J0, b);
       bool any = false;
       for (auto &p : particles_in_cell)
         {

@@ -3,6 +3,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/grid/background_grid.h>
+#include <mpm/io/atomic_files.h>
 #include <mpm/particles/particle_layout.h>
 
 #include <string>
@@ -85,8 +86,4 @@ namespace mpm
     std::vector<std::pair<double, std::string>> particle_records, grid_records;
   };
 
-  /// Write @p content to @p file_name via a temporary file and a rename.
-  void
-  write_file_atomically(const std::string &file_name,
-                        const std::string &content);
 } // namespace mpm

@@ -1,4 +1,4 @@
-#include <mpm/io/durable_files.h>
+#include <mpm/io/atomic_files.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -27,23 +27,29 @@ namespace mpm
   }
 
   void
-  write_file_durably(const std::string &file_name, const std::string &content)
+  write_file_atomically(const std::string &file_name,
+                        const std::string &content,
+                        const bool         durable)
   {
     const std::string tmp = file_name + ".tmp";
     {
       std::ofstream out(tmp);
       out << content;
       if (!out)
-        throw std::runtime_error("cannot write the file '" + tmp + "'");
+        throw std::runtime_error("Cannot write the file '" + tmp + "'");
     }
-    flush_to_storage(tmp);
+    if (durable)
+      flush_to_storage(tmp);
     if (std::rename(tmp.c_str(), file_name.c_str()) != 0)
-      throw std::runtime_error("cannot rename '" + tmp + "' to '" + file_name +
+      throw std::runtime_error("Cannot rename '" + tmp + "' to '" + file_name +
                                "'");
-    // the rename changed the folder's entries: flush the folder too
-    const auto slash = file_name.find_last_of('/');
-    flush_to_storage(slash == std::string::npos ? std::string(".") :
-                     slash == 0                 ? std::string("/") :
-                                                  file_name.substr(0, slash));
+    if (durable)
+      {
+        // the rename changed the folder's entries: flush the folder too
+        const auto slash = file_name.find_last_of('/');
+        flush_to_storage(slash == std::string::npos ? std::string(".") :
+                         slash == 0                 ? std::string("/") :
+                                                      file_name.substr(0, slash));
+      }
   }
 } // namespace mpm
