@@ -64,6 +64,11 @@ namespace mpm
     n_owned = partitioner->locally_owned_size();
     n_ghost = partitioner->n_ghost_indices();
 
+    owned_cell_list.clear();
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned_cell_list.push_back(cell);
+
     // Cell geometry, node numbering and heights for owned and ghost cells.
     const unsigned int n_cells = tria->n_active_cells();
     cell_geometry.assign(n_cells, {});

@@ -170,6 +170,27 @@ namespace mpm
 
 
 
+      SymmetricTensor<2, 3>
+      rotate_about_z(const SymmetricTensor<2, 3> &stress, const double w)
+      {
+        // R = [[c, s, 0], [-s, c, 0], [0, 0, 1]] with
+        // c = (1 - w^2) / (1 + w^2), s = 2 w / (1 + w^2).
+        const double k = 1. / (1. + w * w);
+        const double c = (1. - w * w) * k, s = 2. * w * k;
+        const double xx = stress[0][0], yy = stress[1][1], xy = stress[0][1];
+        const double xz = stress[0][2], yz = stress[1][2];
+        SymmetricTensor<2, 3> r;
+        r[0][0] = c * c * xx + 2. * c * s * xy + s * s * yy;
+        r[1][1] = s * s * xx - 2. * c * s * xy + c * c * yy;
+        r[0][1] = c * s * (yy - xx) + (c * c - s * s) * xy;
+        r[0][2] = c * xz + s * yz;
+        r[1][2] = c * yz - s * xz;
+        r[2][2] = stress[2][2];
+        return r;
+      }
+
+
+
       void
       zero_constrained_components(SymmetricTensor<2, 3>    &stress,
                                   const KinematicAssumption k)
@@ -201,7 +222,11 @@ namespace mpm
                          SymmetricTensor<2, 3>    &stress)
       {
         const Tensor<2, 3> &L = kinematics.velocity_gradient;
-        stress = rotate(stress, hughes_winget_rotation(L, kinematics.dt));
+        if (L[0][2] == 0. && L[1][2] == 0. && L[2][0] == 0. && L[2][1] == 0.)
+          stress =
+            rotate_about_z(stress, 0.25 * kinematics.dt * (L[0][1] - L[1][0]));
+        else
+          stress = rotate(stress, hughes_winget_rotation(L, kinematics.dt));
         stress += stress_increment(c, kinematics.dt * dealii::symmetrize(L), k);
         zero_constrained_components(stress, k);
       }

@@ -124,10 +124,19 @@ namespace mpm
           }
       });
 
-    const bool parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
-    if ((parallel ? Utilities::MPI::max(unplaced ? 1 : 0, comm) : unplaced) !=
-        0)
+    // One reduction for both questions: could every particle be placed,
+    // and did any change its cell (if none did, the handler is left as it
+    // is: its remove_particles() walks all particles to recount them).
+    const bool         parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
+    const unsigned int mine[2]  = {unplaced ? 1u : 0u,
+                                  leaving.empty() ? 0u : 1u};
+    unsigned int status[2] = {mine[0], mine[1]};
+    if (parallel)
+      Utilities::MPI::max(mine, comm, status);
+    if (status[0] != 0)
       return false;
+    if (status[1] == 0)
+      return true;
 
     particles.remove_particles(leaving);
     for (const auto &m : local_moves)

@@ -666,9 +666,8 @@ namespace mpm
   Simulator<dim>::grid_to_particle(const double dt)
   {
     TimerOutput::Scope t(timer, "G2P");
-    // The domain families fuse MUSL's re-map into G2P (one stencil).
+    // MUSL's re-map is fused into G2P (one pass over the particles).
     const bool fused_remap =
-      domain_functions &&
       params.time.scheme == Parameters::TimeStepping::Scheme::musl;
     const auto e =
       domain_functions ?
@@ -684,7 +683,8 @@ namespace mpm
                                    particle_handler,
                                    kinematics,
                                    dt,
-                                   params.time.flip_fraction);
+                                   params.time.flip_fraction,
+                                   fused_remap ? &remap : nullptr);
     if (local_error.empty())
       local_error = e;
   }
@@ -693,20 +693,9 @@ namespace mpm
   void
   Simulator<dim>::remap_momentum()
   {
+    // The re-mapped momentum is in `remap` (G2P filled it).
     TimerOutput::Scope t(timer, "MUSL re-map");
-    if (!domain_functions) // the domain families re-map in G2P
-      {
-        const auto e_p2g =
-          transfer::particle_to_grid(background,
-                                     particle_handler,
-                                     bodies,
-                                     current_time,
-                                     transfer::P2GContent::momentum,
-                                     remap);
-        if (local_error.empty())
-          local_error = e_p2g;
-      }
-    const auto e = nodal_velocity(
+    const auto         e = nodal_velocity(
       background, p2g, remap, dim, 0, min_nodal_mass, kinematics);
     if (local_error.empty())
       local_error = e;

@@ -360,12 +360,10 @@ namespace mpm
   {
     using L   = ParticleLayout<dim>;
     double dt = std::numeric_limits<double>::max();
-    for (const auto &cell : grid.triangulation().active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
+    for_each_cell_with_particles(
+      grid, particles, [&](const auto &cell, const auto &pic) {
         const double h = grid.cell_height(cell);
-        for (const auto &p : particles.particles_in_cell(cell))
+        for (const auto &p : pic)
           {
             const double *prop = p.get_properties().data();
             double        v2   = 0;
@@ -377,7 +375,7 @@ namespace mpm
               embed<dim>(load_matrix<dim>(prop + L::F), 1.));
             dt = std::min(dt, h / (c + std::sqrt(v2)));
           }
-      }
+      });
     return dt;
   }
 

@@ -18,16 +18,25 @@ namespace mpm
                      Particles::ParticleHandler<dim> &particles,
                      const NodalVector               &kinematics,
                      const double                     dt,
-                     const double                     flip)
+                     const double                     flip,
+                     NodalVector                     *remap)
     {
-      using K                   = KinematicsLayout<dim>;
-      constexpr unsigned int nv = shape_functions::n_q1<dim>;
-      const double          *in = kinematics.begin();
-      std::string            error;
-      double                 N[nv];
+      using L                         = ParticleLayout<dim>;
+      using K                         = KinematicsLayout<dim>;
+      constexpr unsigned int nv       = shape_functions::n_q1<dim>;
+      const double          *in       = kinematics.begin();
+      double                *momentum = nullptr;
+      if (remap)
+        {
+          *remap   = 0.;
+          momentum = remap->begin();
+        }
+      std::string error;
+      double      N[nv];
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
-          const unsigned int *nodes = grid.nodes(cell);
+          const unsigned int *nodes          = grid.nodes(cell);
+          double              local[nv][dim] = {}; // re-mapped momentum
           for (auto &p : pic)
             {
               shape_functions::Q1Cell<dim>::values(p.get_reference_location(),
@@ -43,8 +52,24 @@ namespace mpm
                     }
                 }
               move_particle<dim>(p, v_grid, dv, flip, false, dt, error);
+              if (momentum)
+                {
+                  const double *prop = p.get_properties().data();
+                  for (unsigned int v = 0; v < nv; ++v)
+                    {
+                      const double w = N[v] * prop[L::mass];
+                      for (unsigned int d = 0; d < dim; ++d)
+                        local[v][d] += w * prop[L::velocity + d];
+                    }
+                }
             }
+          if (momentum)
+            for (unsigned int v = 0; v < nv; ++v)
+              for (unsigned int d = 0; d < dim; ++d)
+                momentum[nodes[v] * dim + d] += local[v][d];
         });
+      if (remap)
+        remap->compress(VectorOperation::add);
       return error;
     }
 
@@ -53,18 +78,21 @@ namespace mpm
                         Particles::ParticleHandler<1> &,
                         const NodalVector &,
                         double,
-                        double);
+                        double,
+                        NodalVector *);
     template std::string
     grid_to_particle<2>(const BackgroundGrid<2> &,
                         Particles::ParticleHandler<2> &,
                         const NodalVector &,
                         double,
-                        double);
+                        double,
+                        NodalVector *);
     template std::string
     grid_to_particle<3>(const BackgroundGrid<3> &,
                         Particles::ParticleHandler<3> &,
                         const NodalVector &,
                         double,
-                        double);
+                        double,
+                        NodalVector *);
   } // namespace transfer
 } // namespace mpm

@@ -99,8 +99,12 @@ namespace mpm
                                           time,
                                           body_loaded[b],
                                           ext);
-                  loaded_face = bodies[b].traction_force_on(
-                    p.get_location(), prop, time, traction, d_face);
+                  loaded_face = bodies[b].has_traction() &&
+                                bodies[b].traction_force_on(p.get_location(),
+                                                            prop,
+                                                            time,
+                                                            traction,
+                                                            d_face);
                 }
               // APIC: the affine velocity C_p
               Tensor<2, dim> C;

@@ -425,6 +425,25 @@ BOOST_AUTO_TEST_CASE(hughes_winget_rotation_is_orthogonal)
   BOOST_TEST(std::abs(dealii::determinant(R) - 1) < 1e-14);
 }
 
+BOOST_AUTO_TEST_CASE(rotation_about_z_equals_the_general_rotation)
+{
+  // An in-plane velocity gradient with a large spin (w = 0.6) and a full
+  // stress: the closed form must give R sigma R^T of the general path.
+  Tensor<2, 3> L;
+  L[0][0] = 0.3, L[0][1] = 1.9, L[1][0] = -1.3, L[1][1] = -0.2, L[2][2] = 0.4;
+  SymmetricTensor<2, 3> sigma;
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = i; j < 3; ++j)
+      sigma[i][j] = std::cos(1.0 + 2 * i + 5 * j);
+  const double dt = 0.75;
+  const auto   general =
+    elasticity::rotate(sigma, elasticity::hughes_winget_rotation(L, dt));
+  const auto fast =
+    elasticity::rotate_about_z(sigma, 0.25 * dt * (L[0][1] - L[1][0]));
+  BOOST_TEST((fast - general).norm() < 1e-15 * sigma.norm());
+  BOOST_TEST(std::abs(fast.norm() - sigma.norm()) < 1e-15);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 

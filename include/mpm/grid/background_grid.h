@@ -71,6 +71,18 @@ namespace mpm
       return dofs;
     }
 
+    using ActiveCell =
+      typename dealii::Triangulation<dim>::active_cell_iterator;
+
+    /// The locally owned active cells, in active cell index order: what
+    /// the particle loops walk (without deal.II's search for the first
+    /// active cell through every coarser level at each loop).
+    const std::vector<ActiveCell> &
+    owned_cells() const
+    {
+      return owned_cell_list;
+    }
+
     /// Geometry of an owned or ghost cell.
     const shape_functions::Q1Cell<dim> &
     geometry(const typename dealii::Triangulation<dim>::active_cell_iterator
@@ -258,6 +270,7 @@ namespace mpm
     dealii::DoFHandler<dim>                                    dofs;
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
     std::vector<shape_functions::Q1Cell<dim>>                  cell_geometry;
+    std::vector<ActiveCell>                                    owned_cell_list;
     std::vector<unsigned int>                                  cell_nodes;
     std::vector<unsigned int>                                  neighbors;
     std::vector<double>                                        cell_heights;

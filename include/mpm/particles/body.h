@@ -71,6 +71,13 @@ namespace mpm
     bool
     has_body_force() const;
 
+    /// Whether some of the body's particles carry a traction.
+    bool
+    has_traction() const
+    {
+      return !prm.traction_boundary_ids.empty();
+    }
+
     /// Where the traction of a particle acts: prop[face_offset_slot] holds
     /// the offset X_face - X_p of its loaded face's centroid in the
     /// reference configuration (ParticleLayout::traction_offset(); 0: none
@@ -110,9 +117,9 @@ namespace mpm
                       double                   *out,
                       dealii::Tensor<1, dim>   &d) const
     {
-      using L            = ParticleLayout<dim>;
-      const double area  = prop[L::traction_area];
-      d                  = dealii::Tensor<1, dim>();
+      using L           = ParticleLayout<dim>;
+      const double area = prop[L::traction_area];
+      d                 = dealii::Tensor<1, dim>();
       if (!(area > 0))
         {
           for (unsigned int k = 0; k < dim; ++k)

@@ -19,10 +19,8 @@ namespace mpm
     dealii::Particles::ParticleHandler<dim> &particles,
     const Function                          &f)
   {
-    for (const auto &cell : grid.triangulation().active_cell_iterators())
+    for (const auto &cell : grid.owned_cells())
       {
-        if (!cell->is_locally_owned())
-          continue;
         const auto pic = particles.particles_in_cell(cell);
         if (pic.begin() != pic.end())
           f(cell, pic);

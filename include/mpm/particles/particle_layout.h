@@ -55,9 +55,9 @@ namespace mpm
     static constexpr unsigned int traction_area = domain + dim * dim;
     static constexpr unsigned int history       = traction_area + 1;
 
-    unsigned int n_history   = 0;
-    bool         has_corners = false;
-    bool         has_affine  = false;
+    unsigned int n_history           = 0;
+    bool         has_corners         = false;
+    bool         has_affine          = false;
     bool         has_traction_offset = false;
 
     static constexpr unsigned int n_corner_values = (1u << dim) * dim;
@@ -81,10 +81,10 @@ namespace mpm
     unsigned int
     traction_offset() const
     {
-      return has_traction_offset ? history + n_history +
-                                     (has_corners ? n_corner_values : 0) +
-                                     (has_affine ? dim * dim : 0) :
-                                   0;
+      return has_traction_offset ?
+               history + n_history + (has_corners ? n_corner_values : 0) +
+                 (has_affine ? dim * dim : 0) :
+               0;
     }
 
     unsigned int

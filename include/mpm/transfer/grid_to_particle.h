@@ -66,6 +66,11 @@ namespace mpm
      * location until they are sorted again. Returns an empty string or a
      * description of the first particle with a non-finite value.
      *
+     * With @p remap (MUSL), each particle's new momentum m_p v_p goes back
+     * to the nodes in the same pass, with the same N_ip (dim components
+     * per node, compressed at the end): one walk through the particle data
+     * instead of two, the data being what bounds these loops.
+     *
      * Standard MPM; the particle-domain families use
      * grid_to_particle_domains().
      */
@@ -75,7 +80,8 @@ namespace mpm
                      dealii::Particles::ParticleHandler<dim> &particles,
                      const NodalVector                       &kinematics,
                      const double                             dt,
-                     const double                             flip_fraction);
+                     const double                             flip_fraction,
+                     NodalVector                             *remap = nullptr);
 
     /**
      * G2P of the particle-domain families. @p affine: APIC's slot of C_p
