@@ -38,9 +38,12 @@ for (run, label), style in zip(runs, ["-", "--", "-"]):
     s = statistics(f"{study}/{run}")
     ax_z.plot(s["T"], s["Z"], style, label=label)
     ax_h.plot(s["tau"], s["H"], style, label=label)
-# the grid study of water_column_study.sh OUT grid, if it was run
+# the grid studies of water_column_study.sh OUT grid / fine, if they ran
 for run, label, style in [("standard_h10", "standard, h = a/10", ":"),
-                          ("standard_h40", "standard, h = a/40", "-.")]:
+                          ("standard_h40", "standard, h = a/40", "-."),
+                          ("theta-bar-node_h40", "node, h = a/40", ":"),
+                          ("theta-bar-node_h80", "node, h = a/80", "-."),
+                          ("theta-bar-node_h160", "node, h = a/160", "--")]:
     if os.path.exists(f"{study}/{run}/statistics.txt"):
         s = statistics(f"{study}/{run}")
         ax_z.plot(s["T"], s["Z"], style, lw=1, label=label)

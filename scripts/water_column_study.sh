@@ -11,17 +11,27 @@
 # theta-bar on h = a/10 (to the end) and h = a/40 (to t = 0.19 s, T = 3.5:
 # the front data only; about 5 minutes) into OUT/standard_h10,
 # OUT/standard_h40, OUT/theta-bar-node_h10, OUT/theta-bar-node_h40.
+# With "fine" instead it runs the node theta-bar on h = a/80 (about 15
+# minutes on one core) and h = a/160 (about 45 minutes on 2 ranks), to
+# t = 0.19 s, for the front's grid convergence (doc/water_column.md).
 # Variants: standard, theta-bar (Volumetric smoothing = cell) and
-# theta-bar-node (= node); VARIANTS="..." runs a subset.
-# Usage: scripts/water_column_study.sh [OUT] [grid]
+# theta-bar-node (= node), each with a suffix _h10, _h40, _h80 or _h160
+# for another grid; VARIANTS="..." runs a subset. NP=2 runs every variant
+# on 2 MPI ranks (the _h160 ones always run on 2).
+# Usage: scripts/water_column_study.sh [OUT] [grid|fine]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-results/water_column}")
 variants=${VARIANTS:-standard theta-bar theta-bar-node}
 [ "${2:-}" = grid ] &&
   variants="$variants standard_h10 standard_h40 theta-bar-node_h10 theta-bar-node_h40"
+[ "${2:-}" = fine ] && variants="theta-bar-node_h80 theta-bar-node_h160"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$out"
-: > "$out/times.txt"
+suffix=""
+[ "${2:-}" = fine ] && suffix=-fine # its own table, beside the study's
+times=$out/times$suffix.txt
+: > "$times"
 for variant in $variants; do
   case $variant in
     theta-bar-node*) smoothing=node ;;
@@ -33,7 +43,13 @@ for variant in $variants; do
   case $variant in
     *_h10) n=10 ;;
     *_h40) n=40; end=0.19 ;;
+    *_h80) n=80; end=0.19 ;;
+    *_h160) n=160; end=0.19 ;;
   esac
+  np=${NP:-1}
+  case $variant in *_h160) np=2 ;; esac
+  run=("$root/build/mpm")
+  [ "$np" = 1 ] || run=(mpirun -np "$np" "$root/build/mpm")
   dir="$out/$variant"
   cat > "$out/$variant.prm" <<PRM
 include $root/prm/water_column.prm
@@ -60,11 +76,11 @@ PRM
   start=$(date +%s.%N)
   # a run that stops (status 2) keeps its output up to there: report it
   status=0
-  "$root/build/mpm" "$out/$variant.prm" > "$out/$variant.log" 2>&1 || status=$?
+  "${run[@]}" "$out/$variant.prm" > "$out/$variant.log" 2>&1 || status=$?
   end=$(date +%s.%N)
   note=""
   [ $status = 0 ] || note=" (stopped, status $status: $(grep -o 'stopped at step.*' "$out/$variant.log" | head -1))"
-  echo "$variant $(python3 -c "print(f'{$end - $start:.1f}')")$note" | tee -a "$out/times.txt"
+  echo "$variant $(python3 -c "print(f'{$end - $start:.1f}')")$note" | tee -a "$times"
 done
 # c = sqrt(K/rho) of the parameter file
 c=$(python3 -c "import math; print(math.sqrt(6.25e5/1000))")
@@ -73,9 +89,9 @@ c=$(python3 -c "import math; print(math.sqrt(6.25e5/1000))")
   for variant in $variants; do runs="$runs $out/$variant"; done
   /usr/bin/python3 "$root/scripts/water_column_rms.py" --check-csv --c "$c" $runs
   echo
-  echo "wall time [s] (whole run, one core):"
-  cat "$out/times.txt"
-} | tee "$out/table.md"
+  echo "wall time [s] (whole run; one core, or 2 ranks with NP=2 and for _h160):"
+  cat "$times"
+} | tee "$out/table$suffix.md"
 plot=${PLOT:-$root/doc/figures/water_column.png}
 mkdir -p "$(dirname "$plot")"
 /usr/bin/python3 "$root/scripts/plot_water_column.py" "$out" "$plot"

@@ -27,8 +27,7 @@ namespace mpm
     {
       mass_momentum_force, ///< USL and MUSL: everything in one pass
       mass_momentum,       ///< USF, first pass
-      force,               ///< USF, second pass (after the stress update)
-      momentum             ///< MUSL re-map of the updated particle momentum
+      force                ///< USF, second pass (after the stress update)
     };
 
     /// Components per node of the P2G vector: mass, momentum (dim),
@@ -43,32 +42,27 @@ namespace mpm
     };
 
     /// What a pass of the given content adds, and where in the node's
-    /// values (P2GLayout, or dim momentum components for the re-map).
+    /// values (P2GLayout).
     template <int dim>
     struct P2GPass
     {
       explicit P2GPass(const P2GContent content)
-        : mass(content == P2GContent::mass_momentum_force ||
-               content == P2GContent::mass_momentum)
+        : mass(content != P2GContent::force)
         , momentum(content != P2GContent::force)
-        , force(content == P2GContent::mass_momentum_force ||
-                content == P2GContent::force)
-        , n_components(content == P2GContent::momentum ?
-                         dim :
-                         P2GLayout<dim>::n_components)
-        , momentum_offset(content == P2GContent::momentum ? 0 : 1)
+        , force(content != P2GContent::mass_momentum)
       {}
       const bool                    mass, momentum, force;
-      const unsigned int            n_components, momentum_offset;
-      static constexpr unsigned int force_offset = 1 + dim;
+      static constexpr unsigned int n_components = P2GLayout<dim>::n_components;
+      static constexpr unsigned int momentum_offset = P2GLayout<dim>::momentum;
+      static constexpr unsigned int force_offset    = P2GLayout<dim>::force;
     };
 
     /**
      * Particle to grid: m_i = sum_p N_ip m_p, (mv)_i = sum_p N_ip m_p v_p,
      * f_i = sum_p [ -V_p sigma_p grad N_ip + N_ip (m_p b_p + A_p t_p) ].
      * Walks the particles cell by cell with Q1 values computed directly,
-     * adds into the ghosted vector @p nodal (packed with P2GLayout, or
-     * with dim components for P2GContent::momentum) and compresses it.
+     * adds into the ghosted vector @p nodal (packed with P2GLayout) and
+     * compresses it. (MUSL's re-map of the new momenta is part of G2P.)
      *
      * With @p filter, the bodies it filters get their stresses projected
      * per cell here (filters::StressFilter, written back to the
