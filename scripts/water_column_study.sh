@@ -11,9 +11,10 @@
 # theta-bar on h = a/10 (to the end) and h = a/40 (to t = 0.19 s, T = 3.5:
 # the front data only; about 5 minutes) into OUT/standard_h10,
 # OUT/standard_h40, OUT/theta-bar-node_h10, OUT/theta-bar-node_h40.
-# With "fine" instead it runs the node theta-bar on h = a/80 (about 15
-# minutes on one core) and h = a/160 (about 45 minutes on 2 ranks), to
-# t = 0.19 s, for the front's grid convergence (doc/water_column.md).
+# With "fine" instead it runs the node theta-bar on h = a/80 (16 minutes
+# of CPU on one core) and h = a/160 (94 minutes on 2 ranks on a machine
+# shared with builds), to t = 0.19 s, for the front's grid convergence
+# (doc/water_column.md); its table goes to OUT/table-fine.md.
 # Variants: standard, theta-bar (Volumetric smoothing = cell) and
 # theta-bar-node (= node), each with a suffix _h10, _h40, _h80 or _h160
 # for another grid; VARIANTS="..." runs a subset. NP=2 runs every variant
