@@ -308,6 +308,7 @@ namespace mpm
   BackgroundGrid<dim>::OwnedCellLocator::OwnedCellLocator(
     const BackgroundGrid<dim> &grid)
     : grid(grid)
+    , owned(grid.owned_cell_list)
   {
     // The owned cells' bounding boxes, from the cached vertices (the same
     // values as cell->bounding_box(), without deal.II's vertex look-ups).
@@ -317,25 +318,22 @@ namespace mpm
         hi[d] = -std::numeric_limits<double>::max();
       }
     double max_extent = 0;
-    for (const auto &cell : grid.tria->active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          owned.push_back(cell);
-          const auto &v =
-            grid.cell_geometry[cell->active_cell_index()].vertices;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              double a = v[0][d], b = v[0][d];
-              for (unsigned int i = 1; i < v.size(); ++i)
-                {
-                  a = std::min(a, v[i][d]);
-                  b = std::max(b, v[i][d]);
-                }
-              lo[d]      = std::min(lo[d], a);
-              hi[d]      = std::max(hi[d], b);
-              max_extent = std::max(max_extent, b - a);
-            }
-        }
+    for (const auto &cell : owned)
+      {
+        const auto &v = grid.cell_geometry[cell->active_cell_index()].vertices;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double a = v[0][d], b = v[0][d];
+            for (unsigned int i = 1; i < v.size(); ++i)
+              {
+                a = std::min(a, v[i][d]);
+                b = std::max(b, v[i][d]);
+              }
+            lo[d]      = std::min(lo[d], a);
+            hi[d]      = std::max(hi[d], b);
+            max_extent = std::max(max_extent, b - a);
+          }
+      }
     if (owned.empty())
       return;
 

@@ -120,9 +120,8 @@ namespace mpm
   LoadBalancer<dim>::weight_imbalance() const
   {
     unsigned long long local = 0;
-    for (const auto &cell : grid.triangulation().active_cell_iterators())
-      if (cell->is_locally_owned())
-        local += weight(particles.n_particles_in_cell(cell));
+    for (const auto &cell : grid.owned_cells())
+      local += weight(particles.n_particles_in_cell(cell));
     const MPI_Comm comm = grid.triangulation().get_communicator();
     const double   mean = Utilities::MPI::sum(local, comm) /
                         double(Utilities::MPI::n_mpi_processes(comm));

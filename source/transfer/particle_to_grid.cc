@@ -64,13 +64,9 @@ namespace mpm
       const bool             do_momentum = pass.momentum;
       const bool             do_force    = pass.force;
 
-      std::vector<char> body_loaded(bodies.size()),
-        body_traction(bodies.size());
+      std::vector<char> body_loaded(bodies.size());
       for (unsigned int b = 0; b < bodies.size(); ++b)
-        {
-          body_loaded[b]   = bodies[b].has_body_force();
-          body_traction[b] = bodies[b].has_traction();
-        }
+        body_loaded[b] = bodies[b].has_body_force();
 
       // The USF force pass adds to the mass and momentum of the first pass
       // (whose ghost entries compress() has already zeroed).
@@ -181,7 +177,7 @@ namespace mpm
                 // nearest point of the cell, the last one whose nodes the
                 // body reaches.
                 Tensor<1, dim> d_face;
-                if (body_traction[b] &&
+                if (bodies[b].has_traction() &&
                     bodies[b].traction_force_on(
                       p.get_location(), prop, time, traction, d_face))
                   {

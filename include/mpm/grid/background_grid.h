@@ -234,12 +234,11 @@ namespace mpm
         std::vector<dealii::Point<dim>> &reference_points) const;
 
     private:
-      const BackgroundGrid<dim> &grid;
-      std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
-                                    owned;
-      dealii::Point<dim>            lo, hi;
-      double                        size = 0;
-      std::array<unsigned int, dim> n;
+      const BackgroundGrid<dim>     &grid;
+      const std::vector<ActiveCell> &owned; // grid.owned_cells()
+      dealii::Point<dim>             lo, hi;
+      double                         size = 0;
+      std::array<unsigned int, dim>  n;
       /// Owned cells (indices into owned) of bucket b, ascending:
       /// bucket_cells[bucket_start[b] .. bucket_start[b+1]).
       std::vector<unsigned int> bucket_start, bucket_cells;
