@@ -5,9 +5,12 @@
 #   cells:   cells inside the block per direction (256 or 512)
 #   variant: standard (default), filter (assumed-stress filter, mass
 #            metric), theta-bar, uGIMP, cpGIMP, CPDI, CPDI2; corner: the
-#            block in one corner of a grid [-0.25, 2.25]^2 (unbalanced:
-#            p4est's equal cell counts give most particles to one rank);
-#            corner-balanced: the same with Load balancing every 50 steps
+#            block in one corner of a grid [-0.25, 2.25]^2 without load
+#            balancing (p4est's equal cell counts give most particles to
+#            one rank); corner-balanced: the same balanced at set-up and
+#            every 50 steps; unbalanced: standard without the set-up
+#            balance. All but corner and unbalanced are balanced at set-up
+#            (Load balancing/Balance at set-up, on by default).
 #   ranks:   the rank counts to run, e.g. "1" or "1 2" (default)
 # Run it on an otherwise idle machine.
 set -euo pipefail
@@ -18,9 +21,11 @@ variant=${2:-standard}
 ranks=${3:-1 2}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 family=standard remedy="" upper=1.25 grid=$((cells * 3 / 2)) interval=0
+at_setup=true
 case "$variant" in
   standard) ;;
-  corner) upper=2.25 grid=$((cells * 5 / 2)) ;;
+  unbalanced) at_setup=false ;;
+  corner) upper=2.25 grid=$((cells * 5 / 2)) at_setup=false ;;
   corner-balanced) upper=2.25 grid=$((cells * 5 / 2)) interval=50 ;;
   filter) remedy="set Stress filter = assumed stress" ;;
   theta-bar) remedy="set Volumetric smoothing = cell" ;;
@@ -35,6 +40,7 @@ subsection Grid
   set Subdivisions = $grid
 end
 subsection Load balancing
+  set Balance at set-up = $at_setup
   set Repartition interval (steps) = $interval
 end
 subsection Shape functions

@@ -15,14 +15,24 @@ namespace mpm
     {
       prm.enter_subsection("Load balancing");
       prm.declare_entry(
+        "Balance at set-up",
+        "true",
+        Patterns::Bool(),
+        "Repartition the grid among the MPI ranks by weight once the "
+        "particles are placed (or read from a checkpoint), if the largest "
+        "rank's weight is more than 5% above the mean. p4est first gives "
+        "every rank the same number of cells, so a body that fills only "
+        "part of the grid leaves some ranks with more particles. Runs on "
+        "one rank and 1D runs are never repartitioned.");
+      prm.declare_entry(
         "Repartition interval (steps)",
         "0",
         Patterns::Integer(0),
-        "Repartition the grid among the MPI ranks by weight at set-up and "
-        "then every this many steps (0: never; the grid keeps p4est's "
-        "partition into equal numbers of cells). A cell weighs Cell weight "
-        "+ Particle weight x its particles; the particles move with their "
-        "cells. 2D and 3D only (1D runs on one rank).");
+        "Check the balance every this many steps and repartition if the "
+        "largest rank's weight is more than 5% above the mean (0: never "
+        "after set-up). A cell weighs Cell weight + Particle weight x its "
+        "particles; the particles move with their cells. 2D and 3D only "
+        "(1D runs on one rank).");
       prm.declare_entry("Cell weight",
                         "1",
                         Patterns::Integer(1),
@@ -40,6 +50,7 @@ namespace mpm
     LoadBalancing::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Load balancing");
+      at_setup        = prm.get_bool("Balance at set-up");
       interval        = prm.get_integer("Repartition interval (steps)");
       cell_weight     = prm.get_integer("Cell weight");
       particle_weight = prm.get_integer("Particle weight");
@@ -72,11 +83,11 @@ namespace mpm
             switch (status)
               {
                 case Tria::CELL_PERSIST:
-                  n = this->particles.n_particles_in_cell(cell);
+                  n = this->n_particles(cell);
                   break;
                 case Tria::CELL_COARSEN:
                   for (const auto &child : cell->child_iterators())
-                    n += this->particles.n_particles_in_cell(child);
+                    n += this->n_particles(child);
                   break;
                 default: // CELL_REFINE: the parent's particles are unknown
                   break;
@@ -102,14 +113,17 @@ namespace mpm
           grid.triangulation());
         // The particles are attached to their cells, go where the cells go
         // and come back with location, reference location, id and every
-        // property unchanged.
-        particles.prepare_for_coarsening_and_refinement();
+        // property unchanged. Planned counts: no particles exist yet.
+        if (!planned)
+          particles.prepare_for_coarsening_and_refinement();
         tria.repartition();
-        particles.unpack_after_coarsening_and_refinement();
+        if (!planned)
+          particles.unpack_after_coarsening_and_refinement();
         // Nodes, ghost layer, cell caches and constraints of the new
         // partition (the mapping is kept: the particle handler holds it).
         grid.setup(bc);
-        particles.update_cached_numbers();
+        if (!planned)
+          particles.update_cached_numbers();
         ++n_repartitions;
       }
     (void)bc;
@@ -121,7 +135,7 @@ namespace mpm
   {
     unsigned long long local = 0;
     for (const auto &cell : grid.owned_cells())
-      local += weight(particles.n_particles_in_cell(cell));
+      local += weight(n_particles(cell));
     const MPI_Comm comm = grid.triangulation().get_communicator();
     const double   mean = Utilities::MPI::sum(local, comm) /
                         double(Utilities::MPI::n_mpi_processes(comm));
@@ -133,8 +147,14 @@ namespace mpm
   LoadBalancer<dim>::balance(const Particles::ParticleHandler<dim> &particles,
                              const MPI_Comm                         comm)
   {
-    const unsigned long long n = particles.n_locally_owned_particles();
-    ParticleBalance          b;
+    return balance(particles.n_locally_owned_particles(), comm);
+  }
+
+  template <int dim>
+  ParticleBalance
+  LoadBalancer<dim>::balance(const unsigned long long n, const MPI_Comm comm)
+  {
+    ParticleBalance b;
     b.min     = Utilities::MPI::min(n, comm);
     b.max     = Utilities::MPI::max(n, comm);
     b.total   = Utilities::MPI::sum(n, comm);

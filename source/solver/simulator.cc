@@ -34,6 +34,10 @@ namespace mpm
       using S = Parameters::TimeStepping::Scheme;
       return s == S::usf ? "USF" : s == S::usl ? "USL" : "MUSL";
     }
+
+    /// Body cells whose particles are seeded and located together: bounds
+    /// the seeds held at once (a few MB), whatever the body's size.
+    constexpr unsigned int seed_chunk_cells = 16384;
   } // namespace
 
   template <int dim>
@@ -66,19 +70,44 @@ namespace mpm
           checkpoint::coarse_mesh_fingerprint(background.triangulation());
         background.setup(params.boundary);
       }
-    if (params.load_balancing.interval > 0)
+    // 1D grids are not distributed; on one rank a repartition is void.
+    const bool shared_grid =
+      dim > 1 && Utilities::MPI::n_mpi_processes(comm) > 1;
+    if (params.load_balancing.interval > 0 ||
+        (params.load_balancing.at_setup && shared_grid))
       balancer = std::make_unique<LoadBalancer<dim>>(params.load_balancing,
                                                      background,
                                                      particle_handler);
+    const bool balance_now = balancer && params.load_balancing.at_setup;
     if (folder.empty())
       {
         create_bodies();
         check_shape_functions();
-        create_particles();
+        // Balance by the particles the bodies will place, before they
+        // exist: no particle data travels.
+        auto               planned = count_planned_particles();
+        unsigned long long n_local = 0;
+        for (const auto &cell : background.owned_cells())
+          n_local += planned[cell->active_cell_index()];
+        setup_balance[0] = LoadBalancer<dim>::balance(n_local, comm);
+        if (balance_now)
+          {
+            balancer->weigh_by(&planned);
+            const bool repartition = balancer->unbalanced();
+            if (repartition)
+              balancer->repartition(params.boundary);
+            balancer->weigh_by(nullptr);
+            if (repartition)
+              planned = count_planned_particles();
+          }
+        create_particles(planned);
       }
-    setup_balance[0] = LoadBalancer<dim>::balance(particle_handler, comm);
-    if (balancer)
-      balancer->repartition(params.boundary);
+    else
+      {
+        setup_balance[0] = LoadBalancer<dim>::balance(particle_handler, comm);
+        if (balance_now && balancer->unbalanced())
+          balancer->repartition(params.boundary);
+      }
     setup_balance[1] = LoadBalancer<dim>::balance(particle_handler, comm);
     stress_filter    = std::make_unique<filters::StressFilter<dim>>(bodies);
     if (params.shape_functions.family != shape_functions::Family::standard)
@@ -389,10 +418,55 @@ namespace mpm
   }
 
   template <int dim>
+  std::vector<unsigned int>
+  Simulator<dim>::count_planned_particles() const
+  {
+    // Only the seeds' positions are needed, chunk by chunk.
+    std::vector<unsigned int> counts(
+      background.triangulation().n_active_cells(), 0);
+    const typename BackgroundGrid<dim>::OwnedCellLocator locator(background);
+    const auto end_cell = background.triangulation().end_active(
+      background.triangulation().n_levels() - 1);
+    std::vector<Point<dim>> positions, xi;
+    std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+    for (const auto &body : bodies)
+      {
+        Triangulation<dim> mesh;
+        create_body_mesh(mesh,
+                         body.prm,
+                         input_folder,
+                         "Bodies/" + Parameters::body_section(body.index));
+        const unsigned int n       = body.prm.particles_per_direction;
+        const unsigned int n_cells = mesh.n_active_cells();
+        for (unsigned int first = 0; first < n_cells; first += seed_chunk_cells)
+          {
+            positions.clear();
+            split_body_cell_positions(mesh,
+                                      n,
+                                      first,
+                                      std::min(n_cells,
+                                               first + seed_chunk_cells),
+                                      positions);
+            locator.locate(positions, cells, xi);
+            for (const auto &c : cells)
+              if (c != end_cell)
+                ++counts[c->active_cell_index()];
+          }
+      }
+    return counts;
+  }
+
+  template <int dim>
   void
-  Simulator<dim>::create_particles()
+  Simulator<dim>::create_particles(const std::vector<unsigned int> &planned)
   {
     initialize_particle_handler();
+    // deal.II's particle storage allocated once at its final size (growing
+    // it doubles the peak memory).
+    unsigned long long n_local = 0;
+    for (const auto &cell : background.owned_cells())
+      n_local += planned[cell->active_cell_index()];
+    particle_handler.reserve(n_local);
     types::particle_index id_offset = 0;
     for (const auto &body : bodies)
       {
@@ -413,22 +487,21 @@ namespace mpm
         // the owned cells is built once, not per chunk.
         const typename BackgroundGrid<dim>::OwnedCellLocator locator(
           background);
-        const unsigned int cells_per_chunk = 16384;
-        auto               for_each_chunk  = [&](const auto &work) {
+        auto for_each_chunk = [&](const auto &work) {
           for (unsigned int first = 0; first < n_cells;
-               first += cells_per_chunk)
+               first += seed_chunk_cells)
             {
               std::vector<ParticleSeed<dim>>  seeds;
               std::vector<unsigned long long> seed_ids;
               seeds.reserve(
-                std::size_t(std::min(cells_per_chunk, n_cells - first)) *
+                std::size_t(std::min(seed_chunk_cells, n_cells - first)) *
                 Utilities::fixed_power<dim>(n));
               seed_ids.reserve(seeds.capacity());
               split_body_cells(mesh,
                                n,
                                body.prm.traction_boundary_ids,
                                first,
-                               std::min(n_cells, first + cells_per_chunk),
+                               std::min(n_cells, first + seed_chunk_cells),
                                seeds,
                                seed_ids);
               std::vector<Point<dim>> positions(seeds.size()), xi;
@@ -442,30 +515,6 @@ namespace mpm
         };
         const auto end_cell = background.triangulation().end_active(
           background.triangulation().n_levels() - 1);
-        // Count first, so that deal.II's particle storage is allocated
-        // once at its final size (growing it doubles the peak memory).
-        // The count needs only the seeds' positions.
-        unsigned long long local_count = 0;
-        {
-          std::vector<Point<dim>> positions, xi;
-          std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
-          for (unsigned int first = 0; first < n_cells;
-               first += cells_per_chunk)
-            {
-              positions.clear();
-              split_body_cell_positions(mesh,
-                                        n,
-                                        first,
-                                        std::min(n_cells,
-                                                 first + cells_per_chunk),
-                                        positions);
-              locator.locate(positions, cells, xi);
-              for (const auto &c : cells)
-                local_count += (c != end_cell);
-            }
-        }
-        particle_handler.reserve(particle_handler.n_locally_owned_particles() +
-                                 local_count);
         unsigned long long  inserted = 0;
         std::string         bad_value;
         std::vector<double> properties;
@@ -1102,8 +1151,13 @@ namespace mpm
       pcout << "  resumed from the checkpoint " << resume_folder << " at step "
             << current_step << ", t = " << current_time << std::endl;
     if (balancer)
-      pcout << "  load balancing: every " << p.load_balancing.interval
-            << " steps, cell weight " << p.load_balancing.cell_weight
+      pcout << "  load balancing: "
+            << (p.load_balancing.at_setup ? "at set-up" : "not at set-up")
+            << (p.load_balancing.interval > 0 ?
+                  ", every " + std::to_string(p.load_balancing.interval) +
+                    " steps" :
+                  std::string())
+            << "; cell weight " << p.load_balancing.cell_weight
             << ", particle weight " << p.load_balancing.particle_weight
             << "; particles per rank at set-up " << setup_balance[0].min << "-"
             << setup_balance[0].max << " -> " << setup_balance[1].min << "-"

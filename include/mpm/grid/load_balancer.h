@@ -5,6 +5,8 @@
 
 #include <mpm/grid/background_grid.h>
 
+#include <vector>
+
 #include <boost/signals2/connection.hpp>
 
 namespace mpm
@@ -54,16 +56,26 @@ namespace mpm
 
     /**
      * Whether the step with this number starts with a repartition: every
-     * `Repartition interval` steps, if the weights are out of balance by
-     * more than 5% (largest rank over the mean). A repartition rebuilds
-     * the whole triangulation from p4est's forest, which costs several
-     * steps, so a balanced partition is kept. Collective at those steps.
+     * `Repartition interval` steps, if the weights are out of balance
+     * (unbalanced()). Collective at those steps.
      */
     bool
     due(const unsigned int step) const
     {
       return prm.interval > 0 && step > 0 && step % prm.interval == 0 &&
-             weight_imbalance() > 1.05;
+             unbalanced();
+    }
+
+    /**
+     * Whether the largest rank's weight is more than 5% above the mean. A
+     * repartition rebuilds the whole triangulation from p4est's forest,
+     * which costs several steps, so a partition this close to balanced is
+     * kept. Collective.
+     */
+    bool
+    unbalanced() const
+    {
+      return weight_imbalance() > 1.05;
     }
 
     /// Largest rank's weight over the mean. Collective.
@@ -74,6 +86,19 @@ namespace mpm
     /// nodes with the boundary conditions @p bc. Collective.
     void
     repartition(const Parameters::BoundaryConditions &bc);
+
+    /**
+     * Until called with nullptr, weigh the cells by these particle counts
+     * (indexed by active cell index) instead of the particles the handler
+     * holds, and let repartition() move no particles. The set-up balance
+     * repartitions this way before the particles exist: no particle data
+     * travels, and the set-up's memory peak stays that of the particles.
+     */
+    void
+    weigh_by(const std::vector<unsigned int> *planned_counts)
+    {
+      planned = planned_counts;
+    }
 
     /// The weight of an active cell with @p n_particles particles.
     unsigned int
@@ -87,12 +112,26 @@ namespace mpm
     balance(const dealii::Particles::ParticleHandler<dim> &particles,
             const MPI_Comm                                 comm);
 
+    /// Particles per rank if this rank holds @p n_local. Collective.
+    static ParticleBalance
+    balance(const unsigned long long n_local, const MPI_Comm comm);
+
     unsigned int n_repartitions = 0;
 
   private:
+    /// Particles in an owned cell: planned or held by the handler.
+    unsigned int
+    n_particles(
+      const typename dealii::Triangulation<dim>::cell_iterator &cell) const
+    {
+      return planned ? (*planned)[cell->active_cell_index()] :
+                       particles.n_particles_in_cell(cell);
+    }
+
     const Parameters::LoadBalancing         &prm;
     BackgroundGrid<dim>                     &grid;
     dealii::Particles::ParticleHandler<dim> &particles;
     boost::signals2::connection              weight_connection;
+    const std::vector<unsigned int>         *planned = nullptr;
   };
 } // namespace mpm

@@ -189,8 +189,10 @@ namespace mpm
     /// (grid/load_balancer.h; parsed in source/grid/load_balancer.cc).
     struct LoadBalancing
     {
-      /// Steps between repartitions; 0: never (the grid keeps the
-      /// partition p4est gave it at set-up, equal numbers of cells).
+      /// Repartition by weight once the particles exist (or are read
+      /// from a checkpoint), if more than one rank shares a 2D/3D grid.
+      bool at_setup = true;
+      /// Steps between repartitions; 0: never after set-up.
       unsigned int interval = 0;
       /// Work of a cell without particles (node loops, the cell loop).
       unsigned int cell_weight = 1;

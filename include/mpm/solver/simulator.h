@@ -169,8 +169,15 @@ namespace mpm
     /// The nodal vectors of the current partition (set-up, repartition).
     void
     initialize_nodal_vectors();
+    /// Per cell (active cell index), the particles the bodies will place
+    /// in it if it is owned: the set-up balance's weights. Every rank
+    /// walks every body; no communication.
+    std::vector<unsigned int>
+    count_planned_particles() const;
+    /// The bodies' particles; @p planned from count_planned_particles()
+    /// on the current partition sizes the storage.
     void
-    create_particles();
+    create_particles(const std::vector<unsigned int> &planned);
     /// Attach the handler to the grid; count the particles that leave it.
     void
     initialize_particle_handler();
