@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -33,6 +34,28 @@ namespace mpm
     {
       using S = Parameters::TimeStepping::Scheme;
       return s == S::usf ? "USF" : s == S::usl ? "USL" : "MUSL";
+    }
+
+    /// RssAnon and RssFile of this process in kB from /proc/self/status
+    /// (zeros where that file does not exist).
+    std::pair<double, double>
+    resident_anonymous_and_file_kb()
+    {
+      std::ifstream in("/proc/self/status");
+      std::string   line;
+      double        anon = 0, file = 0;
+      while (std::getline(in, line))
+        {
+          std::istringstream words(line);
+          std::string        key;
+          double             kb = 0;
+          words >> key >> kb;
+          if (key == "RssAnon:")
+            anon = kb;
+          else if (key == "RssFile:")
+            file = kb;
+        }
+      return {anon, file};
     }
 
     /// Body cells whose particles are seeded and located together: bounds
@@ -1029,6 +1052,19 @@ namespace mpm
           << " MB over all ranks = " << peak / n / 1024.
           << " KB per particle (triangulation and nodes " << grid / 1048576.
           << " MB)" << std::endl;
+    // The peak counts the shared libraries in every process, though
+    // their pages are files shared by the ranks: what the run allocates
+    // is the anonymous part (Linux only).
+    const auto [anon, file] = resident_anonymous_and_file_kb();
+    if (Utilities::MPI::min(anon > 0 ? 1 : 0, comm) == 1)
+      {
+        const double all = Utilities::MPI::sum(anon * 1024., comm);
+        pcout << "  memory: at the end " << all / 1048576.
+              << " MB allocated over all ranks = " << all / n / 1024.
+              << " KB per particle, plus " << file / 1024.
+              << " MB of mapped files (shared libraries) on rank 0"
+              << std::endl;
+      }
   }
 
   template <int dim>
