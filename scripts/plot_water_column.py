@@ -38,22 +38,18 @@ for (run, label), style in zip(runs, ["-", "--", "-"]):
     s = statistics(f"{study}/{run}")
     ax_z.plot(s["T"], s["Z"], style, label=label)
     ax_h.plot(s["tau"], s["H"], style, label=label)
-# the grid studies of water_column_study.sh OUT grid / fine, if they ran
-for run, label, style in [("standard_h10", "standard, h = a/10", ":"),
-                          ("standard_h40", "standard, h = a/40", "-."),
-                          ("theta-bar-node_h40", "node, h = a/40", ":"),
-                          ("theta-bar-node_h80", "node, h = a/80", "-."),
-                          ("theta-bar-node_h160", "node, h = a/160", "--")]:
-    if os.path.exists(f"{study}/{run}/statistics.txt"):
-        s = statistics(f"{study}/{run}")
-        ax_z.plot(s["T"], s["Z"], style, lw=1, label=label)
-        ax_h.plot(s["tau"], s["H"], style, lw=1, label=label)
-ax_z.set(xlim=(0, 3.6), ylim=(0.9, 4.6), xlabel="T = t sqrt(2g/a)",
-         ylabel="Z = x_front / a", title="surge front")
-ax_h.set(xlim=(0, 7.8), ylim=(0, 1.05), xlabel="tau = t sqrt(g/a)",
-         ylabel="H = h / (2a)", title="height at the wall")
-ax_z.legend(fontsize=8)
-ax_h.legend(fontsize=8)
+
+
+def finish_curves(ax_z, ax_h):
+    ax_z.set(xlim=(0, 3.6), ylim=(0.9, 4.6), xlabel="T = t sqrt(2g/a)",
+             ylabel="Z = x_front / a", title="surge front")
+    ax_h.set(xlim=(0, 7.8), ylim=(0, 1.05), xlabel="tau = t sqrt(g/a)",
+             ylabel="H = h / (2a)", title="height at the wall")
+    ax_z.legend(fontsize=8)
+    ax_h.legend(fontsize=8)
+
+
+finish_curves(ax_z, ax_h)
 
 for i, (run, label) in enumerate(runs):
     w = 6 // len(runs)
@@ -76,3 +72,31 @@ fig.suptitle("Water column collapse, h = a/20, 2x2 particles per cell "
 fig.tight_layout()
 fig.savefig(out, dpi=110)
 print(f"wrote {out}")
+
+# The grid studies (water_column_study.sh OUT grid / fine), if they ran:
+# their own figure, <out>_grids.png, beside the h = a/20 runs.
+grid_runs = [(run, label, style) for run, label, style in
+             [("standard", "standard, h = a/20", "-"),
+              ("theta-bar-node", "node, h = a/20", "-"),
+              ("standard_h10", "standard, h = a/10", ":"),
+              ("standard_h40", "standard, h = a/40", "-."),
+              ("theta-bar-node_h10", "node, h = a/10", ":"),
+              ("theta-bar-node_h40", "node, h = a/40", "-."),
+              ("theta-bar-node_h80", "node, h = a/80", "--"),
+              ("theta-bar-node_h160", "node, h = a/160", "--")]
+             if os.path.exists(f"{study}/{run}/statistics.txt")]
+if any("_h" in run for run, _, _ in grid_runs):
+    fig, (ax_z, ax_h) = plt.subplots(1, 2, figsize=(14, 5))
+    ax_z.plot(T_DATA, Z_DATA, "ko", label="Martin & Moyce 1952")
+    ax_h.plot(TAU_DATA, H_DATA, "ko", label="Martin & Moyce 1952")
+    for run, label, style in grid_runs:
+        s = statistics(f"{study}/{run}")
+        ax_z.plot(s["T"], s["Z"], style, lw=1, label=label)
+        ax_h.plot(s["tau"], s["H"], style, lw=1, label=label)
+    finish_curves(ax_z, ax_h)
+    fig.suptitle("Water column collapse on finer and coarser grids "
+                 "(scripts/water_column_study.sh OUT grid, OUT fine)")
+    fig.tight_layout()
+    grids_out = os.path.splitext(out)[0] + "_grids.png"
+    fig.savefig(grids_out, dpi=110)
+    print(f"wrote {grids_out}")

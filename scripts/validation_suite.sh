@@ -10,27 +10,27 @@
 #        QUICK=1 scripts/validation_suite.sh  # a coarse, short smoke run
 #        PARTS="fe axial_bar" scripts/validation_suite.sh   # some parts
 #
-# Parts, with their wall time on the 2-core development machine (from the
-# doc pages; the machine shared with other jobs can be slower):
-#   fe              mpm-fe on prm/fe_*.prm (FE references)          ~1 min
-#   cantilever      scripts/cantilever_study.sh + plot (section 2)  ~4 min
-#   column          scripts/column_study.sh + plot (section 5)      ~5 min
-#   thick_cylinder  scripts/thick_cylinder_study.sh + plot          ~5 min
+# Parts, with their wall time in the full run of 2026-12-02 (one core,
+# the other busy; doc/validation.md):
+#   fe              mpm-fe on prm/fe_*.prm (FE references)          18 s
+#   cantilever      scripts/cantilever_study.sh + plot (section 2)  1.2 min
+#   column          scripts/column_study.sh + plot (section 5)      3.7 min
+#   thick_cylinder  scripts/thick_cylinder_study.sh + plot          4.5 min
 #   convecting_bar  scripts/run_convecting_bar.sh and
-#                   scripts/convecting_strip_study.sh (section 1)   ~2 min
+#                   scripts/convecting_strip_study.sh (section 1)   18 s
 #   mms             scripts/mms_study.sh 2D and 3D, every family,
-#                   + scripts/plot_mms.py (section 8)               ~6 min
-#   spinning_disk   scripts/spinning_disk_study.sh with FLIP (20 min)
-#                   and the APIC table at CFL 0.1 (5 runs, ~10 min
-#                   each) (section 3)                               ~70 min
-#   axial_bar       scripts/axial_bar_study.sh (section 9)          ~5 s
+#                   + scripts/plot_mms.py (section 8)               11 min
+#   spinning_disk   scripts/spinning_disk_study.sh with FLIP and the
+#                   APIC table at CFL 0.1 (5 runs) (section 3)      26 min
+#   axial_bar       scripts/axial_bar_study.sh (section 9)          7 s
 #   cooks_membrane  scripts/cooks_membrane_study.sh + plot (section 7)
 #                   (a) 21 runs at h = 4, 2, 1; (b) 14 runs at h = 4
-#                   and 2 and 3 at h = 1                           ~50 min
-#   water_column    scripts/water_column_study.sh + plot (section 6) ~2.5 min
+#                   and 2 and 3 at h = 1                           20 min
+#   water_column    scripts/water_column_study.sh + plot (section 6) 1.8 min
 #   recompute       scripts/recompute_measures.py on every run with
-#                   particle CSVs and parameters.prm                ~1-3 min
-# Full suite: about 145 minutes; the spinning disk is most of it. QUICK=1 (coarse grids, short runs, few variants) takes a few
+#                   particle CSVs and parameters.prm                2.6 min
+# Full suite: 71 minutes. QUICK=1 (coarse grids, short runs, few
+# variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.
 #

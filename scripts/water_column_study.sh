@@ -6,7 +6,8 @@
 # OUT/<variant>.log, writes OUT/table.md (scripts/water_column_rms.py:
 # RMS of Z and H against Martin & Moyce, checkerboard, largest speed, wall
 # time) and the figure doc/figures/water_column.png (or $PLOT)
-# (scripts/plot_water_column.py).
+# (scripts/plot_water_column.py); if OUT holds runs of the grid studies
+# below, also water_column_grids.png beside it.
 # With the second argument "grid" it also runs standard MPM and the node
 # theta-bar on h = a/10 (to the end) and h = a/40 (to t = 0.19 s, T = 3.5:
 # the front data only; about 5 minutes) into OUT/standard_h10,

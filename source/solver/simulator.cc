@@ -58,6 +58,18 @@ namespace mpm
       return {anon, file};
     }
 
+    /// The particles of @p counts (per active cell index) in the owned cells.
+    template <int dim>
+    unsigned long long
+    owned_total(const BackgroundGrid<dim>       &grid,
+                const std::vector<unsigned int> &counts)
+    {
+      unsigned long long n = 0;
+      for (const auto &cell : grid.owned_cells())
+        n += counts[cell->active_cell_index()];
+      return n;
+    }
+
     /// Body cells whose particles are seeded and located together: bounds
     /// the seeds held at once (a few MB), whatever the body's size.
     constexpr unsigned int seed_chunk_cells = 16384;
@@ -108,11 +120,9 @@ namespace mpm
         check_shape_functions();
         // Balance by the particles the bodies will place, before they
         // exist: no particle data travels.
-        auto               planned = count_planned_particles();
-        unsigned long long n_local = 0;
-        for (const auto &cell : background.owned_cells())
-          n_local += planned[cell->active_cell_index()];
-        setup_balance[0] = LoadBalancer<dim>::balance(n_local, comm);
+        auto planned = count_planned_particles();
+        setup_balance[0] =
+          LoadBalancer<dim>::balance(owned_total(background, planned), comm);
         if (balance_now)
           {
             balancer->weigh_by(&planned);
@@ -486,10 +496,7 @@ namespace mpm
     initialize_particle_handler();
     // deal.II's particle storage allocated once at its final size (growing
     // it doubles the peak memory).
-    unsigned long long n_local = 0;
-    for (const auto &cell : background.owned_cells())
-      n_local += planned[cell->active_cell_index()];
-    particle_handler.reserve(n_local);
+    particle_handler.reserve(owned_total(background, planned));
     types::particle_index id_offset = 0;
     for (const auto &body : bodies)
       {

@@ -189,8 +189,9 @@ namespace mpm
     /// (grid/load_balancer.h; parsed in source/grid/load_balancer.cc).
     struct LoadBalancing
     {
-      /// Repartition by weight once the particles exist (or are read
-      /// from a checkpoint), if more than one rank shares a 2D/3D grid.
+      /// Repartition by weight at set-up (by the planned particle counts,
+      /// or by the particles read from a checkpoint), if more than one
+      /// rank shares a 2D/3D grid.
       bool at_setup = true;
       /// Steps between repartitions; 0: never after set-up.
       unsigned int interval = 0;
