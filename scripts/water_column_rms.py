@@ -24,8 +24,13 @@ neighbours) and its checkerboard-mode part (RMS over 2x2 blocks of
 (p00 - p10 - p01 + p11)/4, zero for any bilinear field), both in units of
 rho g 2a, as means over T <= 3.4 and at T = 2.
 
+With --height-to TAU it prints instead the RMS of H over the height
+points with tau <= TAU only (for runs that end early, e.g. the fine
+grids to tau = 2.5) and the differences at tau = 1.28, 1.84 and 2.45.
+
 Usage: water_column_rms.py [--check-csv] [--c SOUND_SPEED] RUN_DIR...
-       water_column_rms.py --modes RUN_DIR..."""
+       water_column_rms.py --modes RUN_DIR...
+       water_column_rms.py --height-to TAU RUN_DIR..."""
 import glob
 import sys
 
@@ -124,7 +129,27 @@ def checkerboard_modes(run, s):
     return r[:, 1].mean(), r[:, 2].mean(), r[k, 1], r[k, 2]
 
 
+def rms_height_to(s, tau_max):
+    """RMS of H over the data points with tau <= tau_max, and the
+    differences at every such point."""
+    m = TAU_DATA <= tau_max + 1e-12
+    d = np.interp(TAU_DATA[m], s["tau"], s["H"]) - H_DATA[m]
+    return np.sqrt(np.mean(d ** 2)), dict(zip(TAU_DATA[m], d))
+
+
 def main(argv):
+    if "--height-to" in argv:
+        i = argv.index("--height-to")
+        tau_max = float(argv[i + 1])
+        del argv[i:i + 2]
+        print(f"| run | RMS H, tau <= {tau_max} | H - data at tau = 1.28 / 1.84 / 2.45 |")
+        print("|---|---|---|")
+        for run in argv:
+            r, d = rms_height_to(statistics(run), tau_max)
+            at = " / ".join(f"{d[t]:+.3f}" if t in d else "-"
+                            for t in (1.28, 1.84, 2.45))
+            print(f"| {run.rstrip('/').split('/')[-1]} | {r:.3f} | {at} |")
+        return
     if "--modes" in argv:
         # the checkerboard recomputed from the particle tables, and its
         # component orthogonal to bilinear fields
