@@ -18,7 +18,8 @@
 # (doc/water_column.md); its table goes to OUT/table-fine.md.
 # Variants: standard, theta-bar (Volumetric smoothing = cell) and
 # theta-bar-node (= node), each with a suffix _h10, _h40, _h80 or _h160
-# for another grid; VARIANTS="..." runs a subset. NP=2 runs every variant
+# for another grid; VARIANTS="..." runs a subset; CFL=... another CFL
+# number than the parameter file's 0.5. NP=2 runs every variant
 # on 2 MPI ranks (the _h160 ones always run on 2).
 # Usage: scripts/water_column_study.sh [OUT] [grid|fine]
 set -euo pipefail
@@ -60,6 +61,7 @@ subsection Grid
 end
 subsection Time stepping
   set End time = $end
+  ${CFL:+set CFL number = $CFL}
 end
 subsection Output
   set Directory = $dir
