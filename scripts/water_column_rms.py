@@ -67,8 +67,15 @@ def rms_front(s, shift=0.0):
 def rms_height(s):
     if s["tau"].iloc[-1] < TAU_DATA[-1]:
         return np.nan
-    H = np.interp(TAU_DATA, s["tau"], s["H"])
-    return np.sqrt(np.mean((H - H_DATA) ** 2))
+    return rms_height_to(s, TAU_DATA[-1])[0]
+
+
+def rms_height_to(s, tau_max):
+    """RMS of H over the data points with tau <= tau_max, and the
+    differences at every such point."""
+    m = TAU_DATA <= tau_max + 1e-12
+    d = np.interp(TAU_DATA[m], s["tau"], s["H"]) - H_DATA[m]
+    return np.sqrt(np.mean(d ** 2)), dict(zip(TAU_DATA[m], d))
 
 
 def best_shift(s):
@@ -127,14 +134,6 @@ def checkerboard_modes(run, s):
     r = np.array(rows)
     k = int(np.argmin(np.abs(r[:, 0] - T_SNAPSHOT)))
     return r[:, 1].mean(), r[:, 2].mean(), r[k, 1], r[k, 2]
-
-
-def rms_height_to(s, tau_max):
-    """RMS of H over the data points with tau <= tau_max, and the
-    differences at every such point."""
-    m = TAU_DATA <= tau_max + 1e-12
-    d = np.interp(TAU_DATA[m], s["tau"], s["H"]) - H_DATA[m]
-    return np.sqrt(np.mean(d ** 2)), dict(zip(TAU_DATA[m], d))
 
 
 def main(argv):
