@@ -12,11 +12,17 @@
 #            balance. All but corner and unbalanced are balanced at set-up
 #            (Load balancing/Balance at set-up, on by default).
 #   ranks:   the rank counts to run, e.g. "1" or "1 2" (default)
+# DIM=3: the same in 3D (prm/throughput_3d.prm; cells default 32, i.e.
+# 262 144 particles as the 2D default).
 # Run it on an otherwise idle machine.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=${MPM:-$root/build/mpm} # MPM=...: another build, for A/B runs
-cells=${1:-256}
+dim=${DIM:-2}
+[ "$dim" = 2 ] || [ "$dim" = 3 ] || { echo "DIM must be 2 or 3" >&2; exit 1; }
+default_cells=256
+[ "$dim" = 3 ] && default_cells=32
+cells=${1:-$default_cells}
 variant=${2:-standard}
 ranks=${3:-1 2}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -33,10 +39,12 @@ case "$variant" in
   *) echo "unknown variant '$variant'" >&2; exit 1 ;;
 esac
 work=$(mktemp -d)
+corner=$upper
+[ "$dim" = 3 ] && corner="$upper, $upper"
 cat > "$work/case.prm" <<PRM
-include $root/prm/throughput_2d.prm
+include $root/prm/throughput_${dim}d.prm
 subsection Grid
-  set Upper corner = $upper, $upper
+  set Upper corner = $upper, $corner
   set Subdivisions = $grid
 end
 subsection Load balancing
@@ -58,7 +66,7 @@ PRM
 cd "$work"
 for np in $ranks; do
   mpirun -np $np "$mpm" case.prm > log.$np
-  echo "$variant, ranks $np, ${cells}^2 block: $(sed -n 's/^  particles: //p' log.$np) particles"
+  echo "$variant, ranks $np, ${cells}^$dim block: $(sed -n 's/^  particles: //p' log.$np) particles"
   grep -E "time loop:|memory:|load balancing:" log.$np
 done
 rm -rf "$work"

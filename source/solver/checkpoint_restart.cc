@@ -8,8 +8,8 @@
 #include <mpm/io/checkpoint.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
+#include <mpm/utilities/wall_clock.h>
 
-#include <chrono>
 #include <csignal>
 #include <cstdint>
 #include <cstdlib>
@@ -27,13 +27,6 @@ namespace mpm
 
   namespace
   {
-    double
-    wall_now()
-    {
-      using namespace std::chrono;
-      return duration<double>(steady_clock::now().time_since_epoch()).count();
-    }
-
     /**
      * A test hook (tests/checkpoint): with MPM_TEST_KILL_IN_CHECKPOINT=n in
      * the environment, every rank kills itself (SIGKILL, no clean-up)
@@ -173,7 +166,7 @@ namespace mpm
           problem = std::string("Checkpointing/Resume computation: ") +
                     e.what() + " (the checkpoint is incomplete or damaged)";
         }
-    throw_if_any<InputError>("", problem);
+    throw_if_any<InputError>(comm, "", problem);
     state_text = Utilities::MPI::broadcast(comm, state_text, 0);
     try
       {
@@ -193,9 +186,9 @@ namespace mpm
     // 2. The grid: the coarse mesh from the parameters (the same as the
     // checkpoint's, or a mesh file has changed), then the refinement and
     // the partition from the checkpoint.
-    background.create(params.grid, input_folder, dim > 1);
+    state.background.create(params.grid, input_folder, dim > 1);
     grid_fingerprint =
-      checkpoint::coarse_mesh_fingerprint(background.triangulation());
+      checkpoint::coarse_mesh_fingerprint(state.background.triangulation());
     if (grid_fingerprint != s.grid_fingerprint)
       throw InputError(
         "the grid built from the parameter file (Grid/" +
@@ -206,7 +199,7 @@ namespace mpm
         "': has the mesh file changed?");
     if constexpr (dim > 1)
       dynamic_cast<parallel::distributed::Triangulation<dim> &>(
-        background.triangulation())
+        state.background.triangulation())
         .load(folder + "/triangulation");
     else
       {
@@ -215,16 +208,16 @@ namespace mpm
           throw InputError("the checkpoint file '" + folder +
                            "/triangulation.1d' cannot be read");
         boost::archive::binary_iarchive archive(in);
-        background.triangulation().load(archive, 0);
+        state.background.triangulation().load(archive, 0);
       }
-    background.setup(params.boundary);
+    state.background.setup(params.boundary);
     create_bodies();
     check_shape_functions();
-    if (layout.n_properties() != s.n_properties)
+    if (state.layout.n_properties() != s.n_properties)
       throw InputError("the checkpoint '" + folder + "' has " +
                        std::to_string(s.n_properties) +
                        " properties per particle, this run needs " +
-                       std::to_string(layout.n_properties()));
+                       std::to_string(state.layout.n_properties()));
 
     // 3. The particles: attached to the cells of the p4est checkpoint (they
     // follow their cells to whichever rank owns them now), or the 1D
@@ -237,41 +230,41 @@ namespace mpm
           throw InputError("the checkpoint file '" + folder +
                            "/particle_handler.txt' cannot be read");
         boost::archive::text_iarchive archive(in);
-        archive >> particle_handler;
-        particle_handler.deserialize();
+        archive >> state.particle_handler;
+        state.particle_handler.deserialize();
       }
     else
       try
         {
           read_particles_1d(folder + "/particles.1d",
-                            background.triangulation(),
-                            particle_handler);
+                            state.background.triangulation(),
+                            state.particle_handler);
         }
       catch (const std::exception &e)
         {
           throw InputError(e.what());
         }
-    particle_handler.update_cached_numbers();
-    if (particle_handler.n_global_particles() != s.n_particles)
+    state.particle_handler.update_cached_numbers();
+    if (state.particle_handler.n_global_particles() != s.n_particles)
       throw InputError("the checkpoint '" + folder + "' holds " +
-                       std::to_string(particle_handler.n_global_particles()) +
+                       std::to_string(state.particle_handler.n_global_particles()) +
                        " particles, its state.txt says " +
                        std::to_string(s.n_particles));
 
     // 4. The solver state. The removed mass stays on the rank that counted
     // it when the number of ranks is the same (the same sum, bit for bit).
-    current_time              = s.time;
-    current_step              = s.step;
-    last_dt                   = s.last_dt;
-    n_global_sorts            = s.n_global_sorts;
+    state.current_time              = s.time;
+    state.current_step              = s.step;
+    state.last_dt                   = s.last_dt;
+    state.n_global_sorts            = s.n_global_sorts;
     const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
     const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
-    removed_mass              = 0;
+    state.removed_mass              = 0;
     if (s.removed_mass.size() == nranks)
-      removed_mass = s.removed_mass[rank];
+      state.removed_mass = s.removed_mass[rank];
     else if (rank == 0)
       for (const double m : s.removed_mass)
-        removed_mass += m;
+        state.removed_mass += m;
     resume_folder = folder;
   }
 
@@ -280,12 +273,12 @@ namespace mpm
   Simulator<dim>::checkpoint_due()
   {
     const auto &c = params.checkpointing;
-    if (c.steps_between > 0 && current_step % c.steps_between == 0)
+    if (c.steps_between > 0 && state.current_step % c.steps_between == 0)
       return true;
     if (c.wall_seconds > 0)
       {
         // rank 0's clock decides, so that every rank agrees
-        int due = wall_now() - last_checkpoint_wall >= c.wall_seconds;
+        int due = wall_seconds() - last_checkpoint_wall >= c.wall_seconds;
         due     = Utilities::MPI::broadcast(comm, due, 0);
         return due != 0;
       }
@@ -297,34 +290,27 @@ namespace mpm
   Simulator<dim>::write_checkpoint()
   {
     TimerOutput::Scope t(timer, "checkpoint");
-    const double       start  = wall_now();
+    const double       start  = wall_seconds();
     const auto        &out    = params.output;
     const bool         root   = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string  prefix = "while writing the checkpoint of step " +
-                               std::to_string(current_step) + ": ";
+                               std::to_string(state.current_step) + ": ";
 
     // A new folder; the latest complete checkpoint stays as it is.
     std::string folder, problem;
-    if (root)
-      try
-        {
-          folder = checkpoint::begin(out.directory, current_step);
-        }
-      catch (const std::exception &e)
-        {
-          problem = e.what();
-        }
-    throw_if_any<RuntimeError>(prefix, problem);
+    on_root<RuntimeError>(comm, prefix, [&]() {
+      folder = checkpoint::begin(out.directory, state.current_step);
+    });
     folder = Utilities::MPI::broadcast(comm, folder, 0);
 
     // Grid and particles (collective in 2D/3D: p4est writes one file for
     // all ranks, the particles travel as data attached to the cells).
-    particle_handler.update_cached_numbers();
+    state.particle_handler.update_cached_numbers();
     if constexpr (dim > 1)
       {
-        particle_handler.prepare_for_serialization();
+        state.particle_handler.prepare_for_serialization();
         dynamic_cast<parallel::distributed::Triangulation<dim> &>(
-          background.triangulation())
+          state.background.triangulation())
           .save(folder + "/triangulation");
       }
     else
@@ -333,12 +319,12 @@ namespace mpm
           std::ofstream out(folder + "/triangulation.1d", std::ios::binary);
           {
             boost::archive::binary_oarchive archive(out);
-            background.triangulation().save(archive, 0);
+            state.background.triangulation().save(archive, 0);
           }
           if (!out)
             throw std::runtime_error("cannot write '" + folder +
                                      "/triangulation.1d'");
-          write_particles_1d(folder + "/particles.1d", particle_handler);
+          write_particles_1d(folder + "/particles.1d", state.particle_handler);
         }
       catch (const std::exception &e)
         {
@@ -355,21 +341,21 @@ namespace mpm
     checkpoint::SolverState s;
     s.dimension          = dim;
     s.n_ranks            = Utilities::MPI::n_mpi_processes(comm);
-    s.n_properties       = layout.n_properties();
-    s.n_particles        = particle_handler.n_global_particles();
-    s.time               = current_time;
-    s.step               = current_step;
-    s.last_dt            = last_dt;
-    s.stable_dt          = stable_dt;
-    s.min_nodal_mass     = min_nodal_mass;
+    s.n_properties       = state.layout.n_properties();
+    s.n_particles        = state.particle_handler.n_global_particles();
+    s.time               = state.current_time;
+    s.step               = state.current_step;
+    s.last_dt            = state.last_dt;
+    s.stable_dt          = state.stable_dt;
+    s.min_nodal_mass     = state.min_nodal_mass;
     s.next_output_time   = next_output_time;
     s.last_output_step   = last_output_step;
     s.n_outputs          = writer->counter();
-    s.n_global_sorts     = n_global_sorts;
+    s.n_global_sorts     = state.n_global_sorts;
     s.n_filter_fallbacks = Utilities::MPI::sum(
-      static_cast<unsigned long long>(stress_filter->n_fallbacks), comm);
+      static_cast<unsigned long long>(state.stress_filter->n_fallbacks), comm);
     s.grid_fingerprint = grid_fingerprint;
-    s.removed_mass     = Utilities::MPI::gather(comm, removed_mass, 0);
+    s.removed_mass     = Utilities::MPI::gather(comm, state.removed_mass, 0);
     s.particle_records = writer->particle_series();
     s.grid_records     = writer->grid_series();
     s.summary_rows     = summary_rows;
@@ -381,15 +367,15 @@ namespace mpm
               std::ofstream f(folder + "/particle_handler.txt");
               {
                 boost::archive::text_oarchive archive(f);
-                archive << particle_handler;
+                archive << state.particle_handler;
               }
               if (!f)
                 throw std::runtime_error("cannot write '" + folder +
                                          "/particle_handler.txt'");
             }
-          std::ostringstream state;
-          s.write(state);
-          write_file_atomically(folder + "/state.txt", state.str());
+          std::ostringstream state_text;
+          s.write(state_text);
+          write_file_atomically(folder + "/state.txt", state_text.str());
           std::ostringstream parameters;
           prm.print_parameters(parameters, ParameterHandler::ShortPRM);
           write_file_atomically(folder + "/parameters.prm", parameters.str());
@@ -402,25 +388,18 @@ namespace mpm
           problem = e.what();
         }
     // Every rank has written its part when every rank gets here.
-    throw_if_any<RuntimeError>(prefix, problem);
+    throw_if_any<RuntimeError>(comm, prefix, problem);
 
     // The commit: latest.txt now names the new folder; then the older
     // folders go.
     unsigned long long bytes = 0;
-    if (root)
-      try
-        {
-          checkpoint::commit(out.directory, folder);
-          bytes = checkpoint::folder_size(folder);
-        }
-      catch (const std::exception &e)
-        {
-          problem = e.what();
-        }
-    throw_if_any<RuntimeError>(prefix, problem);
+    on_root<RuntimeError>(comm, prefix, [&]() {
+      checkpoint::commit(out.directory, folder);
+      bytes = checkpoint::folder_size(folder);
+    });
     ++n_checkpoints_written;
-    last_checkpoint_wall = wall_now();
-    pcout << "  checkpoint: step " << current_step << ", t = " << current_time
+    last_checkpoint_wall = wall_seconds();
+    pcout << "  checkpoint: step " << state.current_step << ", t = " << state.current_time
           << " -> " << folder << " (" << bytes / 1048576. << " MB, "
           << Utilities::MPI::max(last_checkpoint_wall - start, comm) << " s)"
           << std::endl;

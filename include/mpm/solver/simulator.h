@@ -7,18 +7,11 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/benchmarks/benchmark.h>
-#include <mpm/filters/convection_correction.h>
-#include <mpm/filters/stress_filter.h>
-#include <mpm/grid/background_grid.h>
-#include <mpm/grid/load_balancer.h>
+#include <mpm/integrators/time_integrator.h>
 #include <mpm/io/checkpoint.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
-#include <mpm/parameters/parameters.h>
-#include <mpm/particles/body.h>
-#include <mpm/particles/particle_layout.h>
-#include <mpm/shape_functions/domain_shape_functions.h>
-#include <mpm/transfer/particle_to_grid.h>
+#include <mpm/solver/simulation_state.h>
 
 #include <array>
 #include <memory>
@@ -28,14 +21,16 @@
 namespace mpm
 {
   /**
-   * The explicit MPM solver. setup() builds everything from the parameters
+   * A run: setup() builds the state from the parameters (or a checkpoint)
    * and checks it (every problem is an InputError, raised before anything
-   * is written); run() advances in time and writes results.
-   *
-   * One step (do_time_step) reads as the algorithm:
-   *   P2G -> grid update -> G2P -> [MUSL re-map] -> stress update ->
-   *   position update (sorting particles into cells),
-   * with the stress update before the force computation for USF.
+   * is written); run() is the time loop, in which a TimeIntegrator
+   * advances the state and the Simulator writes output and checkpoints.
+   * Its parts live in their own files:
+   *   simulator.cc          wiring, set-up, the loop;
+   *   initial_state.cc      bodies and their particles;
+   *   simulator_output.cc   statistics, particle and grid files, screen;
+   *   checkpoint_restart.cc checkpoints and resuming from them;
+   * and the step itself in integrators/.
    */
   template <int dim>
   class Simulator
@@ -44,6 +39,7 @@ namespace mpm
     Simulator(const Parameters::AllParameters<dim> &parameters,
               dealii::ParameterHandler             &prm,
               const MPI_Comm                        comm);
+    ~Simulator();
 
     /// Build grid, bodies and particles; check stability. Collective.
     void
@@ -53,19 +49,20 @@ namespace mpm
     void
     run();
 
-    /// Advance by one step of length dt (the phases below).
+    /// Advance by one step of length dt: repartition if due, the
+    /// integrator's step, the clock, the collective error check.
     void
     do_time_step(const double dt);
 
     double
     time() const
     {
-      return current_time;
+      return state.current_time;
     }
     unsigned int
     step() const
     {
-      return current_step;
+      return state.current_step;
     }
     /// Stable step of the current state (collective min).
     double
@@ -90,7 +87,7 @@ namespace mpm
     unsigned int
     n_global_sorts_used() const
     {
-      return n_global_sorts;
+      return state.n_global_sorts;
     }
 
     /// Repartition the grid by particle count now (Load balancing; a step
@@ -103,7 +100,7 @@ namespace mpm
     const LoadBalancer<dim> *
     load_balancer() const
     {
-      return balancer.get();
+      return state.balancer.get();
     }
 
     /// Particles per rank at set-up, before and after the first
@@ -117,23 +114,23 @@ namespace mpm
     dealii::Particles::ParticleHandler<dim> &
     particles()
     {
-      return particle_handler;
+      return state.particle_handler;
     }
     const BackgroundGrid<dim> &
     grid() const
     {
-      return background;
+      return state.background;
     }
     const std::vector<Body<dim>> &
     get_bodies() const
     {
-      return bodies;
+      return state.bodies;
     }
     /// The particle-domain family's weights (null for standard MPM).
     const shape_functions::DomainShapeFunctions<dim> *
     domain_shape_functions() const
     {
-      return domain_functions.get();
+      return state.domain_functions.get();
     }
 
     /// Whether setup() continued from a checkpoint.
@@ -149,26 +146,9 @@ namespace mpm
     write_checkpoint();
 
   private:
-    // The phases of one step.
-    void
-    particle_to_grid(const transfer::P2GContent content);
-    void
-    update_grid(const double dt);
-    void
-    grid_to_particle(const double dt);
-    void
-    remap_momentum();
-    void
-    update_stress(const double dt);
-    void
-    update_positions();
-
-    // Set-up pieces.
+    // Initial state (initial_state.cc).
     void
     create_bodies();
-    /// The nodal vectors of the current partition (set-up, repartition).
-    void
-    initialize_nodal_vectors();
     /// Per cell (active cell index), the particles the bodies will place
     /// in it if it is owned: the set-up balance's weights. Every rank
     /// walks every body; no communication.
@@ -181,6 +161,18 @@ namespace mpm
     /// Attach the handler to the grid; count the particles that leave it.
     void
     initialize_particle_handler();
+    /// The family's layout needs and its checks against grid and remedies.
+    void
+    check_shape_functions();
+    void
+    initial_properties(const Body<dim>         &body,
+                       const ParticleSeed<dim> &seed,
+                       const double             rho,
+                       std::vector<double>     &properties) const;
+    /// Repartition by the planned particle counts (before any particle
+    /// exists) and create the particles.
+    void
+    create_initial_state(const bool balance_now);
 
     // Checkpoint and restart (checkpoint_restart.cc).
     /// The checkpoint folder to resume from, or "" to start anew.
@@ -193,34 +185,34 @@ namespace mpm
     /// Whether a checkpoint is due after the step just taken. Collective.
     bool
     checkpoint_due();
-    /// The family's layout needs and its checks against grid and remedies.
-    void
-    check_shape_functions();
-    void
-    initial_properties(const Body<dim>         &body,
-                       const ParticleSeed<dim> &seed,
-                       const double             rho,
-                       std::vector<double>     &properties) const;
 
-    // Output pieces.
+    // Output (simulator_output.cc).
+    /// The output folder, the statistics file and the parameters beside
+    /// it; on a restart the series as the checkpoint left them.
+    void
+    open_output();
+    /// Whether the step just taken ends at an output time; schedules the
+    /// next one.
+    bool
+    output_due();
     void
     write_output();
+    void
+    write_test_summary();
     void
     print_header();
     void
     print_progress(const bool force);
+    /// Throughput of the loop, filter fall-backs, balance, memory, timers.
+    void
+    print_summary(const double       loop_seconds,
+                  const unsigned int n_steps);
     void
     print_memory();
 
     /// Throw the same RuntimeError on every rank if any rank found one.
     void
     check_errors();
-
-    /// Collective: if any rank has a problem, throw Error(prefix + the
-    /// first rank's message) on every rank.
-    template <typename Error>
-    void
-    throw_if_any(const std::string &prefix, const std::string &local_problem);
 
     const Parameters::AllParameters<dim> &params;
     dealii::ParameterHandler             &prm;
@@ -229,41 +221,18 @@ namespace mpm
     dealii::TimerOutput                   timer;
     std::string                           input_folder;
 
-    BackgroundGrid<dim>                         background;
-    dealii::Particles::ParticleHandler<dim>     particle_handler;
-    ParticleLayout<dim>                         layout;
-    std::vector<Body<dim>>                      bodies;
+    SimulationState<dim>                        state;
+    std::unique_ptr<TimeIntegrator<dim>>        integrator;
     std::vector<std::string>                    history_names;
     std::unique_ptr<benchmarks::Benchmark<dim>> benchmark;
-
-    NodalVector p2g, kinematics, remap;
-    NodalVector volume_sums; ///< node-based volumetric smoothing only
-    std::unique_ptr<LoadBalancer<dim>> balancer;
-    std::array<ParticleBalance, 2>     setup_balance;
-    double                             min_nodal_mass = 0;
-
-    double       current_time = 0;
-    unsigned int current_step = 0;
-    double       last_dt      = 0;
-    double       stable_dt    = 0; ///< from the last stress update (local)
-    double       removed_mass = 0; ///< local
-    std::string  local_error;      ///< first problem found on this rank
-    std::vector<std::string> lost_messages;
+    std::array<ParticleBalance, 2>              setup_balance;
 
     std::unique_ptr<OutputWriter<dim>>   writer;
     std::unique_ptr<StatisticsFile<dim>> statistics_file;
     std::vector<std::string>             summary_rows;
     double                               next_output_time = 0;
     unsigned int last_output_step = dealii::numbers::invalid_unsigned_int;
-    unsigned int n_global_sorts   = 0;
-    std::unique_ptr<filters::StressFilter<dim>> stress_filter;
-    /// The particle-domain family's weights (null for standard MPM).
-    std::unique_ptr<shape_functions::DomainShapeFunctions<dim>>
-      domain_functions;
-    /// The 1D convection correction, around the P2G passes with forces.
-    filters::ConvectionCorrection<dim> convection_correction;
-    bool                               any_convection_correction = false;
-    double                             wall_start = 0, last_progress = 0;
+    double       wall_start = 0, last_progress = 0;
 
     /// Hash of the coarse mesh, stored in checkpoints.
     std::string grid_fingerprint;
@@ -274,19 +243,4 @@ namespace mpm
     double                  last_checkpoint_wall  = 0;
     unsigned int            n_checkpoints_written = 0;
   };
-
-  template <int dim>
-  template <typename Error>
-  void
-  Simulator<dim>::throw_if_any(const std::string &prefix,
-                               const std::string &local_problem)
-  {
-    const unsigned int rank   = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int nranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int first =
-      dealii::Utilities::MPI::min(local_problem.empty() ? nranks : rank, comm);
-    if (first < nranks)
-      throw Error(
-        prefix + dealii::Utilities::MPI::broadcast(comm, local_problem, first));
-  }
 } // namespace mpm

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <mpm/integrators/time_integrator.h>
+#include <mpm/transfer/particle_to_grid.h>
+
+namespace mpm
+{
+  /**
+   * The explicit MPM step (doc/theory.md, section 3). One step reads as
+   * the algorithm, a list of named phases:
+   *   USL, MUSL: P2G -> grid update -> G2P [+ MUSL re-map] -> stress
+   *              update -> position update;
+   *   USF:       P2G (mass, momentum) -> nodal velocity -> stress update ->
+   *              P2G (force) -> grid update -> G2P -> position update.
+   * The step length is fixed or a CFL fraction of the stability limit
+   * that the stress update measures.
+   */
+  template <int dim>
+  class ExplicitIntegrator : public TimeIntegrator<dim>
+  {
+  public:
+    using TimeIntegrator<dim>::TimeIntegrator;
+
+    std::string
+    name() const override
+    {
+      return "explicit";
+    }
+
+    /// The stability limit of the initial state; a fixed step above it,
+    /// or a damping that reverses the motion within a step, is refused.
+    void
+    initialize() override;
+
+    double
+    next_step_length() const override;
+
+    void
+    advance(const double dt) override;
+
+    /// Nodal mass, momentum and velocity from the particles.
+    void
+    compute_nodal_fields() override;
+
+  private:
+    using TimeIntegrator<dim>::state;
+
+    // The phases of one step.
+    void
+    particle_to_grid(const transfer::P2GContent content);
+    /// USF: the nodal velocity from the first P2G pass.
+    void
+    nodal_velocity_from_momentum();
+    void
+    update_grid(const double dt);
+    void
+    grid_to_particle(const double dt);
+    void
+    remap_momentum();
+    void
+    update_stress(const double dt);
+    void
+    update_positions();
+  };
+} // namespace mpm

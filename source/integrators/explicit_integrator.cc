@@ -1,0 +1,276 @@
+#include <mpm/grid/grid_update.h>
+#include <mpm/integrators/explicit_integrator.h>
+#include <mpm/particles/particle_relocation.h>
+#include <mpm/solver/stress_update.h>
+#include <mpm/transfer/grid_to_particle.h>
+#include <mpm/utilities/input_error.h>
+
+#include <sstream>
+
+namespace mpm
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::initialize()
+  {
+    using StepControl  = Parameters::TimeStepping::StepControl;
+    const auto &time   = state.params.time;
+    state.stable_dt    = ::mpm::stable_time_step(state.background,
+                                              state.particle_handler,
+                                              state.bodies);
+    state.stable_dt    = Utilities::MPI::min(state.stable_dt, state.comm);
+    const double limit = state.stable_dt;
+    if (time.step_control == StepControl::fixed && time.time_step > limit)
+      {
+        std::ostringstream msg;
+        msg << "Time stepping/Time step = " << time.time_step
+            << " exceeds the stability limit min_p h/(c_p + |v_p|) = " << limit
+            << " of the initial state; choose at most that, or "
+            << "Time step control = CFL";
+        throw InputError(msg.str());
+      }
+    // Mass-proportional damping scales the grid velocity by (1 - c dt) in
+    // a step: above c dt = 1 it reverses the motion every step, above 2 it
+    // grows without bound.
+    const double first_dt = time.step_control == StepControl::fixed ?
+                              time.time_step :
+                              time.cfl_number * limit;
+    if (time.damping * first_dt > 1.)
+      {
+        std::ostringstream msg;
+        msg << "Time stepping/Damping coefficient = " << time.damping
+            << " times the first time step " << first_dt << " is "
+            << time.damping * first_dt
+            << " > 1: the damping would reverse the velocity within a step "
+            << "(explicit damping needs c dt <= 1); choose at most "
+            << 1. / first_dt << " or a smaller step";
+        throw InputError(msg.str());
+      }
+  }
+
+  template <int dim>
+  double
+  ExplicitIntegrator<dim>::next_step_length() const
+  {
+    const auto &time = state.params.time;
+    return time.step_control == Parameters::TimeStepping::StepControl::fixed ?
+             time.time_step :
+             time.cfl_number * state.stable_dt;
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::advance(const double dt)
+  {
+    using Scheme = Parameters::TimeStepping::Scheme;
+    using transfer::P2GContent;
+    // The particles moved (and may have changed cells or ranks) since the
+    // stencils were built.
+    if (state.domain_functions)
+      state.domain_functions->forget_stencils();
+    if (state.params.time.scheme == Scheme::usf)
+      {
+        particle_to_grid(P2GContent::mass_momentum);
+        nodal_velocity_from_momentum();
+        update_stress(dt);
+        // cpGIMP and CPDI take their domains from F, which the stress
+        // update has just changed: the force pass and G2P see the new
+        // domain, so mass and momentum must be mapped with it again, or
+        // G2P's weights no longer sum to the nodal masses and momentum is
+        // not conserved.
+        using shape_functions::Family;
+        const bool new_domains =
+          state.domain_functions &&
+          (state.domain_functions->family() == Family::cpgimp ||
+           state.domain_functions->family() == Family::cpdi);
+        if (new_domains)
+          state.domain_functions->forget_stencils();
+        particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
+                                       P2GContent::force);
+        update_grid(dt);
+        grid_to_particle(dt);
+      }
+    else
+      {
+        particle_to_grid(P2GContent::mass_momentum_force);
+        update_grid(dt);
+        grid_to_particle(dt);
+        if (state.params.time.scheme == Scheme::musl)
+          remap_momentum();
+        update_stress(dt);
+      }
+    update_positions();
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::compute_nodal_fields()
+  {
+    particle_to_grid(transfer::P2GContent::mass_momentum);
+    nodal_velocity(state.background,
+                   state.p2g,
+                   state.p2g,
+                   transfer::P2GLayout<dim>::n_components,
+                   transfer::P2GLayout<dim>::momentum,
+                   state.min_nodal_mass,
+                   state.kinematics);
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::particle_to_grid(const transfer::P2GContent content)
+  {
+    // The 1D convection correction changes the forces of this pass only,
+    // with the cells the particles are in now: the stresses are shifted
+    // for the pass and put back after it, and the body-force correction is
+    // added to the nodal forces (doc/theory.md, section 4.11).
+    const bool correct = state.any_convection_correction &&
+                         (content == transfer::P2GContent::force ||
+                          content == transfer::P2GContent::mass_momentum_force);
+    if (correct)
+      {
+        TimerOutput::Scope t(state.timer, "convection correction");
+        state.convection_correction.apply(state.background,
+                                          state.particle_handler,
+                                          state.bodies,
+                                          state.current_time);
+      }
+    {
+      TimerOutput::Scope t(state.timer, "P2G");
+      state.local_error.record(
+        transfer::particle_to_grid(state.background,
+                                   state.particle_handler,
+                                   state.bodies,
+                                   state.current_time,
+                                   content,
+                                   state.p2g,
+                                   state.stress_filter.get(),
+                                   state.domain_functions.get(),
+                                   state.layout.affine()));
+    }
+    if (correct)
+      state.convection_correction.finish(state.p2g);
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::nodal_velocity_from_momentum()
+  {
+    TimerOutput::Scope t(state.timer, "grid update");
+    state.local_error.record(
+      nodal_velocity(state.background,
+                     state.p2g,
+                     state.p2g,
+                     transfer::P2GLayout<dim>::n_components,
+                     transfer::P2GLayout<dim>::momentum,
+                     state.min_nodal_mass,
+                     state.kinematics));
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::update_grid(const double dt)
+  {
+    TimerOutput::Scope t(state.timer, "grid update");
+    state.local_error.record(::mpm::update_grid(state.background,
+                                                state.p2g,
+                                                dt,
+                                                state.params.time.damping,
+                                                state.min_nodal_mass,
+                                                state.kinematics));
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::grid_to_particle(const double dt)
+  {
+    TimerOutput::Scope t(state.timer, "G2P");
+    // MUSL's re-map is fused into G2P (one pass over the particles).
+    const bool fused_remap =
+      state.params.time.scheme == Parameters::TimeStepping::Scheme::musl;
+    NodalVector *remap       = fused_remap ? &state.remap : nullptr;
+    const double flip        = state.params.time.flip_fraction;
+    state.local_error.record(
+      state.domain_functions ?
+        transfer::grid_to_particle_domains(state.background,
+                                           state.particle_handler,
+                                           state.kinematics,
+                                           dt,
+                                           flip,
+                                           *state.domain_functions,
+                                           remap,
+                                           state.layout.affine()) :
+        transfer::grid_to_particle(state.background,
+                                   state.particle_handler,
+                                   state.kinematics,
+                                   dt,
+                                   flip,
+                                   remap));
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::remap_momentum()
+  {
+    // The re-mapped momentum is in `remap` (G2P filled it).
+    TimerOutput::Scope t(state.timer, "MUSL re-map");
+    state.local_error.record(nodal_velocity(state.background,
+                                            state.p2g,
+                                            state.remap,
+                                            dim,
+                                            0,
+                                            state.min_nodal_mass,
+                                            state.kinematics));
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::update_stress(const double dt)
+  {
+    TimerOutput::Scope t(state.timer, "stress update");
+    const auto         r = ::mpm::update_stress(state.background,
+                                        state.particle_handler,
+                                        state.bodies,
+                                        state.kinematics,
+                                        dt,
+                                        &state.volume_sums,
+                                        state.domain_functions.get());
+    state.stable_dt      = r.stable_time_step;
+    state.local_error.record(r.error);
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::update_positions()
+  {
+    TimerOutput::Scope t(state.timer, "position update");
+    if (state.domain_functions &&
+        state.domain_functions->family() == shape_functions::Family::cpdi2)
+      state.local_error.record(
+        transfer::move_domain_corners(state.background,
+                                      state.particle_handler,
+                                      state.kinematics,
+                                      state.last_dt,
+                                      *state.domain_functions));
+    state.lost_messages.clear();
+    if (!relocate_particles(state.background,
+                            state.particle_handler,
+                            state.comm))
+      {
+        state.particle_handler.sort_particles_into_subdomains_and_cells();
+        ++state.n_global_sorts;
+      }
+    if (!state.lost_messages.empty() &&
+        !state.params.boundary.remove_lost_particles)
+      state.local_error.record(
+        state.lost_messages.front() +
+        " (set Boundary conditions/Particles leaving the grid = "
+        "remove to delete such particles instead)");
+  }
+
+  template class ExplicitIntegrator<1>;
+  template class ExplicitIntegrator<2>;
+  template class ExplicitIntegrator<3>;
+} // namespace mpm

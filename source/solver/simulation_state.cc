@@ -1,0 +1,26 @@
+#include <mpm/grid/grid_update.h>
+#include <mpm/solver/simulation_state.h>
+#include <mpm/transfer/particle_to_grid.h>
+
+namespace mpm
+{
+  template <int dim>
+  void
+  SimulationState<dim>::initialize_nodal_vectors()
+  {
+    background.initialize_vector(p2g, transfer::P2GLayout<dim>::n_components);
+    background.initialize_vector(kinematics,
+                                 KinematicsLayout<dim>::n_components);
+    background.initialize_vector(remap, dim);
+    for (const auto &body : bodies)
+      if (body.prm.volumetric_smoothing == filters::VolumetricSmoothing::node)
+        {
+          background.initialize_vector(volume_sums, 3);
+          break;
+        }
+  }
+
+  template struct SimulationState<1>;
+  template struct SimulationState<2>;
+  template struct SimulationState<3>;
+} // namespace mpm
