@@ -109,13 +109,7 @@ namespace mpm
   ExplicitIntegrator<dim>::compute_nodal_fields()
   {
     particle_to_grid(transfer::P2GContent::mass_momentum);
-    nodal_velocity(state.background,
-                   state.p2g,
-                   state.p2g,
-                   transfer::P2GLayout<dim>::n_components,
-                   transfer::P2GLayout<dim>::momentum,
-                   state.min_nodal_mass,
-                   state.kinematics);
+    nodal_velocity_from_momentum();
   }
 
   template <int dim>
@@ -190,8 +184,8 @@ namespace mpm
     // MUSL's re-map is fused into G2P (one pass over the particles).
     const bool fused_remap =
       state.params.time.scheme == Parameters::TimeStepping::Scheme::musl;
-    NodalVector *remap       = fused_remap ? &state.remap : nullptr;
-    const double flip        = state.params.time.flip_fraction;
+    NodalVector *remap = fused_remap ? &state.remap : nullptr;
+    const double flip  = state.params.time.flip_fraction;
     state.local_error.record(
       state.domain_functions ?
         transfer::grid_to_particle_domains(state.background,

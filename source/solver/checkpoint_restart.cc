@@ -246,20 +246,20 @@ namespace mpm
         }
     state.particle_handler.update_cached_numbers();
     if (state.particle_handler.n_global_particles() != s.n_particles)
-      throw InputError("the checkpoint '" + folder + "' holds " +
-                       std::to_string(state.particle_handler.n_global_particles()) +
-                       " particles, its state.txt says " +
-                       std::to_string(s.n_particles));
+      throw InputError(
+        "the checkpoint '" + folder + "' holds " +
+        std::to_string(state.particle_handler.n_global_particles()) +
+        " particles, its state.txt says " + std::to_string(s.n_particles));
 
     // 4. The solver state. The removed mass stays on the rank that counted
     // it when the number of ranks is the same (the same sum, bit for bit).
-    state.current_time              = s.time;
-    state.current_step              = s.step;
-    state.last_dt                   = s.last_dt;
-    state.n_global_sorts            = s.n_global_sorts;
+    state.current_time        = s.time;
+    state.current_step        = s.step;
+    state.last_dt             = s.last_dt;
+    state.n_global_sorts      = s.n_global_sorts;
     const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
     const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
-    state.removed_mass              = 0;
+    state.removed_mass        = 0;
     if (s.removed_mass.size() == nranks)
       state.removed_mass = s.removed_mass[rank];
     else if (rank == 0)
@@ -399,8 +399,9 @@ namespace mpm
     });
     ++n_checkpoints_written;
     last_checkpoint_wall = wall_seconds();
-    pcout << "  checkpoint: step " << state.current_step << ", t = " << state.current_time
-          << " -> " << folder << " (" << bytes / 1048576. << " MB, "
+    pcout << "  checkpoint: step " << state.current_step
+          << ", t = " << state.current_time << " -> " << folder << " ("
+          << bytes / 1048576. << " MB, "
           << Utilities::MPI::max(last_checkpoint_wall - start, comm) << " s)"
           << std::endl;
   }

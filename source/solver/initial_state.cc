@@ -43,9 +43,9 @@ namespace mpm
     check_shape_functions();
     // Balance by the particles the bodies will place, before they
     // exist: no particle data travels.
-    auto planned     = count_planned_particles();
-    setup_balance[0] = LoadBalancer<dim>::balance(
-      owned_total(state.background, planned), comm);
+    auto planned = count_planned_particles();
+    setup_balance[0] =
+      LoadBalancer<dim>::balance(owned_total(state.background, planned), comm);
     if (balance_now)
       {
         state.balancer->weigh_by(&planned);
@@ -150,15 +150,17 @@ namespace mpm
   Simulator<dim>::check_shape_functions()
   {
     using shape_functions::Family;
-    const Family family = params.shape_functions.family;
-    state.layout.has_corners  = family == Family::cpdi2;
-    state.layout.has_affine   = params.time.apic;
+    const Family family      = params.shape_functions.family;
+    state.layout.has_corners = family == Family::cpdi2;
+    state.layout.has_affine  = params.time.apic;
     // Loaded faces: the offset of the face from the particle, so that the
     // traction acts on the face and not a particle half-spacing inside it.
     state.layout.has_traction_offset =
-      std::any_of(state.bodies.begin(), state.bodies.end(), [](const Body<dim> &b) {
-        return !b.prm.traction_boundary_ids.empty();
-      });
+      std::any_of(state.bodies.begin(),
+                  state.bodies.end(),
+                  [](const Body<dim> &b) {
+                    return !b.prm.traction_boundary_ids.empty();
+                  });
     for (auto &body : state.bodies)
       body.face_offset_slot = state.layout.traction_offset();
     const std::string what =
@@ -221,7 +223,8 @@ namespace mpm
             body.initial_velocity.value(plus, 0., vp);
             body.initial_velocity.value(minus, 0., vm);
             for (unsigned int i = 0; i < dim; ++i)
-              p[state.layout.affine() + i * dim + j] = (vp[i] - vm[i]) / (2 * h);
+              p[state.layout.affine() + i * dim + j] =
+                (vp[i] - vm[i]) / (2 * h);
           }
       }
     if (state.layout.has_corners)
@@ -262,8 +265,8 @@ namespace mpm
   {
     using L = ParticleLayout<dim>;
     state.particle_handler.initialize(state.background.triangulation(),
-                                state.background.mapping(),
-                                state.layout.n_properties());
+                                      state.background.mapping(),
+                                      state.layout.n_properties());
     state.particle_handler.signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &p,
              const typename Triangulation<dim>::active_cell_iterator &) {
@@ -272,7 +275,8 @@ namespace mpm
         std::ostringstream s;
         s << "particle " << p->get_id() << " (body "
           << p->get_properties()[L::body] << ") left the grid in step "
-          << state.current_step + 1 << ", position (" << p->get_location() << ")";
+          << state.current_step + 1 << ", position (" << p->get_location()
+          << ")";
         state.lost_messages.push_back(s.str());
       });
   }
@@ -284,7 +288,8 @@ namespace mpm
     // Only the seeds' positions are needed, chunk by chunk.
     std::vector<unsigned int> counts(
       state.background.triangulation().n_active_cells(), 0);
-    const typename BackgroundGrid<dim>::OwnedCellLocator locator(state.background);
+    const typename BackgroundGrid<dim>::OwnedCellLocator locator(
+      state.background);
     const auto end_cell = state.background.triangulation().end_active(
       state.background.triangulation().n_levels() - 1);
     std::vector<Point<dim>> positions, xi;
@@ -406,11 +411,11 @@ namespace mpm
                       break;
                     }
               state.particle_handler.insert_particle(seeds[i].position,
-                                               xi[i],
-                                               id_offset + seed_ids[i],
-                                               cells[i],
-                                               ArrayView<const double>(
-                                                 properties));
+                                                     xi[i],
+                                                     id_offset + seed_ids[i],
+                                                     cells[i],
+                                                     ArrayView<const double>(
+                                                       properties));
               ++inserted;
             }
         });
@@ -451,19 +456,18 @@ namespace mpm
     state.particle_handler.update_cached_numbers();
   }
 
-#define MPM_INSTANTIATE(d)                                                \
-  template void Simulator<d>::create_initial_state(bool);                 \
-  template void Simulator<d>::create_bodies();                            \
-  template void Simulator<d>::check_shape_functions();                    \
-  template void Simulator<d>::initial_properties(const Body<d> &,         \
-                                                 const ParticleSeed<d> &, \
-                                                 double,                  \
-                                                 std::vector<double> &)   \
-    const;                                                                \
-  template void Simulator<d>::initialize_particle_handler();              \
-  template std::vector<unsigned int>                                      \
-  Simulator<d>::count_planned_particles() const;                          \
-  template void Simulator<d>::create_particles(                           \
+#define MPM_INSTANTIATE(d)                                                     \
+  template void Simulator<d>::create_initial_state(bool);                      \
+  template void Simulator<d>::create_bodies();                                 \
+  template void Simulator<d>::check_shape_functions();                         \
+  template void Simulator<d>::initial_properties(const Body<d> &,              \
+                                                 const ParticleSeed<d> &,      \
+                                                 double,                       \
+                                                 std::vector<double> &) const; \
+  template void Simulator<d>::initialize_particle_handler();                   \
+  template std::vector<unsigned int> Simulator<d>::count_planned_particles()   \
+    const;                                                                     \
+  template void Simulator<d>::create_particles(                                \
     const std::vector<unsigned int> &);
   MPM_INSTANTIATE(1)
   MPM_INSTANTIATE(2)

@@ -43,8 +43,8 @@ namespace mpm
     else
       {
         state.background.create(params.grid, input_folder);
-        grid_fingerprint = checkpoint::coarse_mesh_fingerprint(
-          state.background.triangulation());
+        grid_fingerprint =
+          checkpoint::coarse_mesh_fingerprint(state.background.triangulation());
         state.background.setup(params.boundary);
       }
     // 1D grids are not distributed; on one rank a repartition is void.
@@ -104,19 +104,19 @@ namespace mpm
   {
     print_header();
     open_output();
-    wall_start = last_progress        = wall_seconds();
-    last_checkpoint_wall              = wall_start;
-    double             output_seconds = 0;
+    wall_start = last_progress = wall_seconds();
+    last_checkpoint_wall       = wall_start;
+    double output_seconds      = 0;
     // Output and checkpoints do not count in the loop's throughput.
     auto untimed = [&](const auto &write) {
       const double before = wall_seconds();
       write();
       output_seconds += wall_seconds() - before;
     };
-    const unsigned int first_step     = state.current_step;
-    const double       end            = params.time.end_time;
-    const double       tiny           = 1e-12 * std::max(end, 1e-300);
-    const unsigned int max_steps      = params.time.max_steps;
+    const unsigned int first_step = state.current_step;
+    const double       end        = params.time.end_time;
+    const double       tiny       = 1e-12 * std::max(end, 1e-300);
+    const unsigned int max_steps  = params.time.max_steps;
     while (state.current_time < end - tiny &&
            (max_steps == 0 || state.current_step < max_steps))
       {
@@ -171,11 +171,11 @@ namespace mpm
   Simulator<dim>::check_errors()
   {
     // One collective per step: the stable step and the first failing rank.
-    const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int nranks = Utilities::MPI::n_mpi_processes(comm);
-    double local[2] = {state.stable_dt,
-                       double(state.local_error.empty() ? nranks : rank)};
-    double global[2];
+    const unsigned int rank     = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int nranks   = Utilities::MPI::n_mpi_processes(comm);
+    double             local[2] = {state.stable_dt,
+                                   double(state.local_error.empty() ? nranks : rank)};
+    double             global[2];
     Utilities::MPI::min(ArrayView<const double>(local, 2),
                         comm,
                         ArrayView<double>(global, 2));
@@ -214,9 +214,10 @@ namespace mpm
   std::vector<double>
   Simulator<dim>::benchmark_values()
   {
-    return benchmark ?
-             benchmark->measure(state.particle_handler, state.current_time, comm) :
-             std::vector<double>();
+    return benchmark ? benchmark->measure(state.particle_handler,
+                                          state.current_time,
+                                          comm) :
+                       std::vector<double>();
   }
 
   template <int dim>

@@ -154,16 +154,21 @@ namespace mpm
     if (out.write_vtu)
       {
         attempt([&]() {
-          writer->write_particles_vtu(state.particle_handler, state.current_time);
+          writer->write_particles_vtu(state.particle_handler,
+                                      state.current_time);
         });
         if (out.write_grid)
           attempt([&]() {
-            writer->write_grid_vtu(state.background, state.p2g, state.kinematics, state.current_time);
+            writer->write_grid_vtu(state.background,
+                                   state.p2g,
+                                   state.kinematics,
+                                   state.current_time);
           });
       }
     if (out.write_csv)
-      attempt(
-        [&]() { writer->write_particles_csv(state.particle_handler, state.current_time); });
+      attempt([&]() {
+        writer->write_particles_csv(state.particle_handler, state.current_time);
+      });
     writer->advance();
     throw_if_any<RuntimeError>(comm,
                                "while writing output at step " +
@@ -174,10 +179,11 @@ namespace mpm
       {
         // Few digits, scaled quantities: stable across ranks and compilers.
         std::ostringstream s;
-        s << std::scientific << std::setprecision(6) << "t " << state.current_time
-          << " step " << state.current_step << " n " << stats.n_particles << " mass "
-          << stats.mass << " removed " << stats.removed_mass << " Ekin "
-          << stats.kinetic_energy << " Estrain " << stats.strain_energy;
+        s << std::scientific << std::setprecision(6) << "t "
+          << state.current_time << " step " << state.current_step << " n "
+          << stats.n_particles << " mass " << stats.mass << " removed "
+          << stats.removed_mass << " Ekin " << stats.kinetic_energy
+          << " Estrain " << stats.strain_energy;
         for (unsigned int d = 0; d < dim; ++d)
           s << " p" << d << ' ' << stats.momentum[d];
         if (dim >= 2)
@@ -193,15 +199,13 @@ namespace mpm
   Simulator<dim>::write_test_summary()
   {
     // Written by rank 0; a failure stops every rank (collective check).
-    on_root<RuntimeError>(comm,
-                          "while writing Output/Test summary file: ",
-                          [&]() {
-                            std::ostringstream s;
-                            for (const auto &r : summary_rows)
-                              s << r << '\n';
-                            write_file_atomically(params.output.test_summary,
-                                                  s.str());
-                          });
+    on_root<RuntimeError>(
+      comm, "while writing Output/Test summary file: ", [&]() {
+        std::ostringstream s;
+        for (const auto &r : summary_rows)
+          s << r << '\n';
+        write_file_atomically(params.output.test_summary, s.str());
+      });
   }
 
   template <int dim>
@@ -214,14 +218,16 @@ namespace mpm
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
           << "  grid: " << state.background.n_global_cells() << " cells, "
           << state.background.n_global_nodes() << " nodes"
-          << (state.background.is_cartesian() ? " (Cartesian)" : " (general Q1)")
+          << (state.background.is_cartesian() ? " (Cartesian)" :
+                                                " (general Q1)")
           << '\n';
     for (const auto &b : state.bodies)
       pcout << "  body " << b.index << ": " << b.material->name()
             << ", rho0 = " << b.material->reference_density() << ", "
             << b.prm.particles_per_direction << "^" << dim
             << " particles per body cell\n";
-    pcout << "  particles: " << state.particle_handler.n_global_particles() << '\n'
+    pcout << "  particles: " << state.particle_handler.n_global_particles()
+          << '\n'
           << "  scheme " << scheme_name(p.time.scheme) << ", FLIP fraction "
           << p.time.flip_fraction << ", end time " << p.time.end_time << '\n'
           << "  time step: "
@@ -234,7 +240,8 @@ namespace mpm
           << p.output.interval << " s" << std::endl;
     if (resumed())
       pcout << "  resumed from the checkpoint " << resume_folder << " at step "
-            << state.current_step << ", t = " << state.current_time << std::endl;
+            << state.current_step << ", t = " << state.current_time
+            << std::endl;
     if (state.balancer)
       pcout << "  load balancing: "
             << (p.load_balancing.at_setup ? "at set-up" : "not at set-up")
@@ -261,10 +268,11 @@ namespace mpm
       params.time.end_time > 0 ? state.current_time / params.time.end_time : 1.;
     const double       elapsed = now - wall_start;
     std::ostringstream s;
-    s << "  step " << std::setw(8) << state.current_step << "  t = " << std::setw(11)
-      << std::setprecision(5) << state.current_time << "  dt = " << std::setw(11)
-      << state.last_dt << "  " << std::fixed << std::setprecision(1) << std::setw(5)
-      << 100 * done << "%  elapsed " << elapsed << " s";
+    s << "  step " << std::setw(8) << state.current_step
+      << "  t = " << std::setw(11) << std::setprecision(5) << state.current_time
+      << "  dt = " << std::setw(11) << state.last_dt << "  " << std::fixed
+      << std::setprecision(1) << std::setw(5) << 100 * done << "%  elapsed "
+      << elapsed << " s";
     if (done > 0 && done < 1)
       s << "  left ~" << elapsed * (1 - done) / done << " s";
     pcout << s.str() << std::endl;
@@ -304,12 +312,12 @@ namespace mpm
     Utilities::System::MemoryStats m;
     Utilities::System::get_memory_stats(m);
     const double peak = Utilities::MPI::sum(double(m.VmHWM) * 1024., comm);
-    const double n = std::max<double>(1, state.particle_handler.n_global_particles());
-    const double grid =
-      Utilities::MPI::sum(double(
-                            state.background.triangulation().memory_consumption() +
-                            state.background.dof_handler().memory_consumption()),
-                          comm);
+    const double n =
+      std::max<double>(1, state.particle_handler.n_global_particles());
+    const double grid = Utilities::MPI::sum(
+      double(state.background.triangulation().memory_consumption() +
+             state.background.dof_handler().memory_consumption()),
+      comm);
     pcout << "  memory: peak " << peak / 1048576.
           << " MB over all ranks = " << peak / n / 1024.
           << " KB per particle (triangulation and nodes " << grid / 1048576.
@@ -329,14 +337,14 @@ namespace mpm
       }
   }
 
-#define MPM_INSTANTIATE(d)                                           \
-  template void Simulator<d>::open_output();                         \
-  template bool Simulator<d>::output_due();                          \
-  template void Simulator<d>::write_output();                        \
-  template void Simulator<d>::write_test_summary();                  \
-  template void Simulator<d>::print_header();                        \
-  template void Simulator<d>::print_progress(bool);                  \
-  template void Simulator<d>::print_summary(double, unsigned int);   \
+#define MPM_INSTANTIATE(d)                                         \
+  template void Simulator<d>::open_output();                       \
+  template bool Simulator<d>::output_due();                        \
+  template void Simulator<d>::write_output();                      \
+  template void Simulator<d>::write_test_summary();                \
+  template void Simulator<d>::print_header();                      \
+  template void Simulator<d>::print_progress(bool);                \
+  template void Simulator<d>::print_summary(double, unsigned int); \
   template void Simulator<d>::print_memory();
   MPM_INSTANTIATE(1)
   MPM_INSTANTIATE(2)

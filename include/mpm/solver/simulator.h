@@ -205,8 +205,7 @@ namespace mpm
     print_progress(const bool force);
     /// Throughput of the loop, filter fall-backs, balance, memory, timers.
     void
-    print_summary(const double       loop_seconds,
-                  const unsigned int n_steps);
+    print_summary(const double loop_seconds, const unsigned int n_steps);
     void
     print_memory();
 
