@@ -2,6 +2,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <mpm/benchmarks/checkerboard.h>
+#include <mpm/benchmarks/global_sums.h>
 #include <mpm/particles/particle_layout.h>
 
 #include <cmath>
@@ -81,10 +82,7 @@ namespace mpm
                 jumps[1] += 1;
               }
           }
-      double global_jumps[2];
-      Utilities::MPI::sum(ArrayView<const double>(jumps, 2),
-                          comm,
-                          ArrayView<double>(global_jumps, 2));
+      const auto global_jumps = global_sums(jumps, comm);
       return global_jumps[1] > 0 ?
                std::sqrt(global_jumps[0] / global_jumps[1]) :
                0.;

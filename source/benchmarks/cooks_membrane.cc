@@ -1,7 +1,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
+#include <mpm/benchmarks/benchmark_registry.h>
 #include <mpm/benchmarks/cooks_membrane.h>
+#include <mpm/benchmarks/global_sums.h>
 #include <mpm/particles/particle_layout.h>
 
 #include <cmath>
@@ -14,27 +16,45 @@ namespace mpm
   {
     using namespace dealii;
 
+    namespace
+    {
+      const BenchmarkDeclaration declaration{
+        "cooks membrane",
+        "Cook's membrane under a shear load, u_y against the FE reference "
+        "(BENCHMARKS.md section 7)",
+        {nonzero_constant("F",
+                          "total load on the right edge [N]",
+                          "the ratios are divided by it"),
+         required_constant("uy_ref",
+                           "FE reference of u_y at (48,60) for F = 1"),
+         required_constant("uy_ref_mid",
+                           "FE reference of u_y at (48,52) for F = 1"),
+         positive_constant("r_fit",
+                           "radius of the plane fitted around a point",
+                           "the particles within it make the fit")},
+        {"uy_corner",
+         "uy_mid",
+         "corner_ratio",
+         "mid_ratio",
+         "corner_nearest_ratio"}};
+    } // namespace
+
     template <int dim>
     CooksMembrane<dim>::CooksMembrane(const double F,
                                       const double uy_ref,
                                       const double uy_ref_mid,
                                       const double r_fit)
-      : F(F)
+      : Benchmark<dim>(declaration.columns)
+      , F(F)
       , uy_ref(uy_ref)
       , uy_ref_mid(uy_ref_mid)
       , r_fit(r_fit)
     {}
 
     template <int dim>
-    std::vector<std::string>
-    CooksMembrane<dim>::columns() const
-    {
-      return {"uy_corner",
-              "uy_mid",
-              "corner_ratio",
-              "mid_ratio",
-              "corner_nearest_ratio"};
-    }
+    CooksMembrane<dim>::CooksMembrane(const BenchmarkConstants &c)
+      : CooksMembrane(c["F"], c["uy_ref"], c["uy_ref_mid"], c["r_fit"])
+    {}
 
     template <int dim>
     double
@@ -66,10 +86,7 @@ namespace mpm
               local[n * n + i] += phi[i] * uy;
             }
         }
-      double sum[n * n + n];
-      Utilities::MPI::sum(ArrayView<const double>(local, n * n + n),
-                          comm,
-                          ArrayView<double>(sum, n * n + n));
+      const auto   sum = global_sums(local, comm);
       Tensor<2, n> A;
       Tensor<1, n> b;
       for (unsigned int i = 0; i < n; ++i)
@@ -129,5 +146,7 @@ namespace mpm
     }
 
     template class CooksMembrane<2>;
+
+    MPM_REGISTER_BENCHMARK(CooksMembrane, declaration, 2)
   } // namespace benchmarks
 } // namespace mpm

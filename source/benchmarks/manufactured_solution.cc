@@ -1,5 +1,7 @@
 #include <deal.II/base/mpi.h>
 
+#include <mpm/benchmarks/benchmark_registry.h>
+#include <mpm/benchmarks/global_sums.h>
 #include <mpm/benchmarks/manufactured_solution.h>
 #include <mpm/particles/particle_layout.h>
 
@@ -12,16 +14,41 @@ namespace mpm
   {
     using namespace dealii;
 
+    namespace
+    {
+      const BenchmarkDeclaration declaration{
+        "manufactured solution",
+        "large-deformation motion of a neo-Hookean unit square or cube held "
+        "by its body force (BENCHMARKS.md section 8)",
+        {positive_constant("G",
+                           "displacement amplitude [m]",
+                           "errors are divided by it"),
+         required_constant("E", "Young's modulus [Pa]"),
+         required_constant("nu", "Poisson's ratio"),
+         required_constant("rho", "density [kg/m^3]")},
+        {"u_L2_error", "u_max_error"}};
+    } // namespace
+
     template <int dim>
     ManufacturedSolution<dim>::ManufacturedSolution(const double amplitude,
                                                     const double youngs_modulus,
                                                     const double poissons_ratio,
                                                     const double density)
-      : G(amplitude)
+      : Benchmark<dim>(declaration.columns)
+      , G(amplitude)
       , E(youngs_modulus)
       , nu(poissons_ratio)
       , rho(density)
       , c(std::sqrt(youngs_modulus / density))
+    {}
+
+    template <int dim>
+    ManufacturedSolution<dim>::ManufacturedSolution(
+      const BenchmarkConstants &constants)
+      : ManufacturedSolution(constants["G"],
+                             constants["E"],
+                             constants["nu"],
+                             constants["rho"])
     {}
 
     template <int dim>
@@ -83,13 +110,6 @@ namespace mpm
     }
 
     template <int dim>
-    std::vector<std::string>
-    ManufacturedSolution<dim>::columns() const
-    {
-      return {"u_L2_error", "u_max_error"};
-    }
-
-    template <int dim>
     std::vector<double>
     ManufacturedSolution<dim>::measure(
       Particles::ParticleHandler<dim> &particles,
@@ -111,15 +131,14 @@ namespace mpm
           local[1] += prop[L::volume0] * error.norm_square();
           max_error = std::max(max_error, error.norm());
         }
-      double sum[2];
-      Utilities::MPI::sum(ArrayView<const double>(local, 2),
-                          comm,
-                          ArrayView<double>(sum, 2));
-      max_error = Utilities::MPI::max(max_error, comm);
+      const auto sum = global_sums(local, comm);
+      max_error      = Utilities::MPI::max(max_error, comm);
       return {std::sqrt(sum[1] / sum[0]) / G, max_error / G};
     }
 
     template class ManufacturedSolution<2>;
     template class ManufacturedSolution<3>;
+
+    MPM_REGISTER_BENCHMARK(ManufacturedSolution, declaration, 2, 3)
   } // namespace benchmarks
 } // namespace mpm

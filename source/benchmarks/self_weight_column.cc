@@ -1,7 +1,8 @@
 #include <deal.II/base/mpi.h>
 
+#include <mpm/benchmarks/benchmark_registry.h>
 #include <mpm/benchmarks/checkerboard.h>
-#include <mpm/benchmarks/self_weight_column.h>
+#include <mpm/benchmarks/global_sums.h>
 #include <mpm/particles/particle_layout.h>
 
 #include <array>
@@ -13,65 +14,86 @@ namespace mpm
   {
     using namespace dealii;
 
-    template <int dim>
-    SelfWeightColumn<dim>::SelfWeightColumn(const double height,
-                                            const double rho,
-                                            const double g,
-                                            const double nu)
-      : height(height)
-      , rho(rho)
-      , g(g)
-      , nu(nu)
-    {}
-
-    template <int dim>
-    std::vector<std::string>
-    SelfWeightColumn<dim>::columns() const
+    namespace
     {
-      return {"sigma_yy_error", "pressure_error", "checkerboard"};
-    }
+      const BenchmarkDeclaration declaration{
+        "self-weight column",
+        "laterally confined column under gravity, plane strain "
+        "(BENCHMARKS.md section 5)",
+        {required_constant("H", "height of the column [m]"),
+         required_constant("rho", "density [kg/m^3]"),
+         required_constant("g", "gravity [m/s^2]"),
+         required_constant("nu", "Poisson's ratio")},
+        {"sigma_yy_error", "pressure_error", "checkerboard"}};
 
-    template <int dim>
-    std::vector<double>
-    SelfWeightColumn<dim>::measure(Particles::ParticleHandler<dim> &particles,
-                                   const double,
-                                   const MPI_Comm comm) const
-    {
-      using L = ParticleLayout<dim>;
-      // exact stresses at the material coordinate Y: xx, yy, zz
-      auto exact = [&](const double *prop) {
-        const double yy = -rho * g * (height - prop[L::X + 1]);
-        const double xx = nu / (1 - nu) * yy;
-        return std::array<double, 3>{{xx, yy, dim == 2 ? nu * (xx + yy) : xx}};
-      };
-      auto pressure_error = [&](const double *prop) {
-        const auto    e    = exact(prop);
-        const double *s    = prop + L::stress;
-        const double  p_ex = -(e[0] + e[1] + e[2]) / 3;
-        const double  p_mp = -(s[0] + s[1] + s[2]) / 3;
-        return p_mp - p_ex;
-      };
-      // totals: V, |yy error| V, |p error| V
-      double local[3] = {};
-      for (const auto &p : particles)
+      /**
+       * BENCHMARKS.md section 5: laterally confined column of height H
+       * under gravity g, plane strain, base at y = 0. Exact static state:
+       * sigma_yy = -rho g (H - Y), sigma_xx = nu/(1-nu) sigma_yy,
+       * sigma_zz = nu (sigma_xx + sigma_yy), with Y the material
+       * coordinate. Columns, all divided by rho g H:
+       * - sigma_yy_error: sum_p |sigma_yy - exact| V_p / sum_p V_p
+       *   (Coombs et al. 2018);
+       * - pressure_error: the same for p = -tr(sigma)/3;
+       * - checkerboard: RMS over all pairs of face-neighbouring background
+       *   cells holding particles of the jump of the cell's
+       *   volume-averaged pressure error. A smooth error has small jumps;
+       *   an oscillating one from cell to cell does not.
+       */
+      template <int dim>
+      class SelfWeightColumn : public Benchmark<dim>
+      {
+      public:
+        explicit SelfWeightColumn(const BenchmarkConstants &c)
+          : Benchmark<dim>(declaration.columns)
+          , height(c["H"])
+          , rho(c["rho"])
+          , g(c["g"])
+          , nu(c["nu"])
+        {}
+
+        std::vector<double>
+        measure(Particles::ParticleHandler<dim> &particles,
+                const double,
+                const MPI_Comm comm) const override
         {
-          const double *prop = p.get_properties().data();
-          const double  V    = prop[L::volume];
-          local[0] += V;
-          local[1] += std::abs(prop[L::stress + 1] - exact(prop)[1]) * V;
-          local[2] += std::abs(pressure_error(prop)) * V;
+          using L = ParticleLayout<dim>;
+          // exact stresses at the material coordinate Y: xx, yy, zz
+          auto exact = [&](const double *prop) {
+            const double yy = -rho * g * (height - prop[L::X + 1]);
+            const double xx = nu / (1 - nu) * yy;
+            return std::array<double, 3>{
+              {xx, yy, dim == 2 ? nu * (xx + yy) : xx}};
+          };
+          auto pressure_error = [&](const double *prop) {
+            const auto    e    = exact(prop);
+            const double *s    = prop + L::stress;
+            const double  p_ex = -(e[0] + e[1] + e[2]) / 3;
+            const double  p_mp = -(s[0] + s[1] + s[2]) / 3;
+            return p_mp - p_ex;
+          };
+          // totals: V, |yy error| V, |p error| V
+          double local[3] = {};
+          for (const auto &p : particles)
+            {
+              const double *prop = p.get_properties().data();
+              const double  V    = prop[L::volume];
+              local[0] += V;
+              local[1] += std::abs(prop[L::stress + 1] - exact(prop)[1]) * V;
+              local[2] += std::abs(pressure_error(prop)) * V;
+            }
+          const auto   sum   = global_sums(local, comm);
+          const double scale = rho * g * height;
+          return {sum[1] / (sum[0] * scale),
+                  sum[2] / (sum[0] * scale),
+                  checkerboard(particles, pressure_error, comm) / scale};
         }
-      double sum[3];
-      Utilities::MPI::sum(ArrayView<const double>(local, 3),
-                          comm,
-                          ArrayView<double>(sum, 3));
-      const double scale = rho * g * height;
-      return {sum[1] / (sum[0] * scale),
-              sum[2] / (sum[0] * scale),
-              checkerboard(particles, pressure_error, comm) / scale};
-    }
 
-    template class SelfWeightColumn<2>;
-    template class SelfWeightColumn<3>;
+      private:
+        double height, rho, g, nu;
+      };
+    } // namespace
+
+    MPM_REGISTER_BENCHMARK(SelfWeightColumn, declaration, 2, 3)
   } // namespace benchmarks
 } // namespace mpm

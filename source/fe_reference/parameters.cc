@@ -5,7 +5,7 @@
 #include <mpm/fe_reference/parameters.h>
 #include <mpm/grid/quadrilateral_mesh.h>
 #include <mpm/materials/elasticity.h>
-#include <mpm/parameters/parameters.h>
+#include <mpm/parameters/parsing.h>
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/numbers.h>

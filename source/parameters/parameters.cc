@@ -1,8 +1,10 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <mpm/benchmarks/benchmark_registry.h>
 #include <mpm/grid/quadrilateral_mesh.h>
 #include <mpm/parameters/parameters.h>
+#include <mpm/parameters/parsing.h>
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/numbers.h>
@@ -17,143 +19,10 @@ namespace mpm
   {
     using namespace dealii;
 
-    namespace
-    {
-      std::vector<unsigned int>
-      parse_unsigned_list(const std::string &text,
-                          const unsigned int n,
-                          const std::string &entry)
-      {
-        const auto parts = Utilities::split_string_list(text, ',');
-        if (parts.size() != n && parts.size() != 1)
-          throw InputError("Parameter '" + entry + "' = '" + text +
-                           "': expected 1 or " + std::to_string(n) +
-                           " comma-separated integers");
-        std::vector<unsigned int> out;
-        for (const auto &p : parts)
-          {
-            const int v = Utilities::string_to_int(p);
-            if (v <= 0)
-              throw InputError("Parameter '" + entry + "' = '" + text +
-                               "': entries must be positive integers");
-            out.push_back(v);
-          }
-        if (out.size() == 1)
-          out.resize(n, out[0]);
-        return out;
-      }
-
-    } // namespace
-
-    /// "0; 0" for vector-valued expressions
-    std::string
-    default_expression(const int dim)
-    {
-      std::string s = "0";
-      for (int d = 1; d < dim; ++d)
-        s += "; 0";
-      return s;
-    }
-
-    std::string
-    default_point(const int dim, const double value)
-    {
-      std::string s;
-      for (int d = 0; d < dim; ++d)
-        s += (d ? ", " : "") + Utilities::to_string(value);
-      return s;
-    }
-
-    std::vector<types::boundary_id>
-    parse_id_list(const std::string &text)
-    {
-      std::vector<types::boundary_id> ids;
-      for (const int i :
-           Utilities::string_to_int(Utilities::split_string_list(text, ',')))
-        ids.push_back(static_cast<types::boundary_id>(i));
-      return ids;
-    }
-
-    template <int dim>
-    Point<dim>
-    parse_point(const std::string &text, const std::string &entry)
-    {
-      const auto parts = Utilities::split_string_list(text, ',');
-      if (parts.size() != dim)
-        throw InputError("Parameter '" + entry + "' = '" + text +
-                         "': expected " + std::to_string(dim) +
-                         " comma-separated coordinates");
-      Point<dim> p;
-      for (unsigned int d = 0; d < dim; ++d)
-        p[d] = Utilities::string_to_double(parts[d]);
-      return p;
-    }
-
     std::string
     body_section(const unsigned int i)
     {
       return "Body " + std::to_string(i);
-    }
-
-    // ------------------------------------------------------------------ Grid
-    template <int dim>
-    void
-    Grid<dim>::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Grid");
-      prm.declare_entry("Type",
-                        "hyper rectangle",
-                        Patterns::Selection("hyper rectangle|mesh file"),
-                        "Background grid: a subdivided box, or a Gmsh (.msh) "
-                        "or UCD (.inp/.ucd) file. Box boundary ids are "
-                        "0/1 (x min/max), 2/3 (y), 4/5 (z).");
-      prm.declare_entry("Lower corner",
-                        default_point(dim, 0.),
-                        Patterns::List(Patterns::Double(), dim, dim),
-                        "Lower corner of the box [m].");
-      prm.declare_entry("Upper corner",
-                        default_point(dim, 1.),
-                        Patterns::List(Patterns::Double(), dim, dim),
-                        "Upper corner of the box [m].");
-      prm.declare_entry("Subdivisions",
-                        "10",
-                        Patterns::List(Patterns::Integer(1), 1, dim),
-                        "Cells per direction: one number for all directions "
-                        "or one per direction.");
-      prm.declare_entry("Mesh file",
-                        "",
-                        Patterns::FileName(),
-                        "Mesh file for Type = mesh file, relative to the "
-                        "parameter file's folder or absolute.");
-      prm.declare_entry("Global refinements",
-                        "0",
-                        Patterns::Integer(0, 12),
-                        "Uniform refinements applied after creation.");
-      prm.leave_subsection();
-    }
-
-    template <int dim>
-    void
-    Grid<dim>::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Grid");
-      type  = prm.get("Type") == "mesh file" ? Type::mesh_file :
-                                               Type::hyper_rectangle;
-      lower = parse_point<dim>(prm.get("Lower corner"), "Grid/Lower corner");
-      upper = parse_point<dim>(prm.get("Upper corner"), "Grid/Upper corner");
-      subdivisions =
-        parse_unsigned_list(prm.get("Subdivisions"), dim, "Grid/Subdivisions");
-      mesh_file          = prm.get("Mesh file");
-      global_refinements = prm.get_integer("Global refinements");
-      prm.leave_subsection();
-      if (type == Type::hyper_rectangle)
-        for (unsigned int d = 0; d < dim; ++d)
-          if (!(upper[d] > lower[d]))
-            throw InputError("Grid/Upper corner must exceed Grid/Lower "
-                             "corner in every direction");
-      if (type == Type::mesh_file && mesh_file.empty())
-        throw InputError(
-          "Grid/Type = mesh file needs Grid/Mesh file to be set");
     }
 
     // ---------------------------------------------------------- TimeStepping
@@ -242,45 +111,6 @@ namespace mpm
           " has no meaning with Velocity transfer = APIC (its particle "
           "velocity is the grid velocity; the affine part keeps what PIC "
           "loses): remove the entry");
-    }
-
-    // ---------------------------------------------------- BoundaryConditions
-    void
-    BoundaryConditions::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Boundary conditions");
-      prm.declare_entry("Fixed boundary ids",
-                        "",
-                        Patterns::List(Patterns::Integer(0, 255)),
-                        "Grid boundary ids whose nodes are held fixed.");
-      prm.declare_entry("Slip boundary ids",
-                        "",
-                        Patterns::List(Patterns::Integer(0, 255)),
-                        "Grid boundary ids with zero normal velocity; other "
-                        "boundaries are free.");
-      prm.declare_entry("Particles leaving the grid",
-                        "error",
-                        Patterns::Selection("error|remove"),
-                        "error: stop with a message naming the particle; "
-                        "remove: delete it and report the removed mass in "
-                        "the statistics.");
-      prm.leave_subsection();
-    }
-
-    void
-    BoundaryConditions::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Boundary conditions");
-      fixed                 = parse_id_list(prm.get("Fixed boundary ids"));
-      slip                  = parse_id_list(prm.get("Slip boundary ids"));
-      remove_lost_particles = prm.get("Particles leaving the grid") == "remove";
-      prm.leave_subsection();
-      for (const auto f : fixed)
-        for (const auto s : slip)
-          if (f == s)
-            throw InputError("Boundary conditions: boundary id " +
-                             std::to_string(f) +
-                             " is listed as both fixed and slip");
     }
 
     // ------------------------------------------------------- Shape functions
@@ -826,10 +656,12 @@ namespace mpm
                         "parameters from here too.");
       prm.declare_entry("Benchmark",
                         "none",
-                        Patterns::Anything(),
+                        Patterns::Selection(
+                          benchmarks::benchmark_names_pattern()),
                         "Name of a benchmark whose error measures are added "
                         "to the statistics file (see doc/benchmarks.md), or "
-                        "none.");
+                        "none. Each reads its constants from Constants:" +
+                          benchmarks::benchmark_list());
       Grid<dim>::declare_parameters(prm);
       TimeStepping::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);
@@ -907,20 +739,11 @@ namespace mpm
       prm.leave_subsection();
     }
 
-    template struct Grid<1>;
-    template struct Grid<2>;
-    template struct Grid<3>;
     template struct Body<1>;
     template struct Body<2>;
     template struct Body<3>;
     template struct AllParameters<1>;
     template struct AllParameters<2>;
     template struct AllParameters<3>;
-    template Point<1>
-    parse_point<1>(const std::string &, const std::string &);
-    template Point<2>
-    parse_point<2>(const std::string &, const std::string &);
-    template Point<3>
-    parse_point<3>(const std::string &, const std::string &);
   } // namespace Parameters
 } // namespace mpm

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mpm
@@ -16,26 +17,40 @@ namespace mpm
      * A benchmark with an exact solution adds error columns to the
      * statistics file. Its parameters come from the parameter file's
      * `Constants` (so the expressions of the initial state and the exact
-     * solution share them).
+     * solution share them). Each benchmark registers itself
+     * (benchmark_registry.h) with the constants it reads, the dimensions
+     * it supports and its columns.
      */
     template <int dim>
     class Benchmark
     {
     public:
+      /// @p columns: the names of the values measure() returns, in order.
+      explicit Benchmark(std::vector<std::string> columns)
+        : column_names(std::move(columns))
+      {}
+
       virtual ~Benchmark() = default;
 
-      virtual std::vector<std::string>
-      columns() const = 0;
+      std::vector<std::string>
+      columns() const
+      {
+        return column_names;
+      }
 
       /// Collective: the error measures at @p time.
       virtual std::vector<double>
       measure(dealii::Particles::ParticleHandler<dim> &particles,
               const double                             time,
               const MPI_Comm                           comm) const = 0;
+
+    private:
+      std::vector<std::string> column_names;
     };
 
-    /// Create a benchmark by name ("none" gives nullptr); InputError lists
-    /// the known names or a missing constant.
+    /// Create a registered benchmark by name ("none" gives nullptr);
+    /// InputError if it does not support @p dim or a constant it needs is
+    /// missing or invalid.
     template <int dim>
     std::unique_ptr<Benchmark<dim>>
     create_benchmark(const std::string                   &name,

@@ -3,6 +3,7 @@
 #include <deal.II/base/point.h>
 
 #include <mpm/benchmarks/benchmark.h>
+#include <mpm/benchmarks/benchmark_constants.h>
 
 namespace mpm
 {
@@ -41,8 +42,8 @@ namespace mpm
                     const double uy_ref_mid,
                     const double r_fit);
 
-      std::vector<std::string>
-      columns() const override;
+      /// From the constants F, uy_ref, uy_ref_mid and r_fit.
+      explicit CooksMembrane(const BenchmarkConstants &constants);
 
       std::vector<double>
       measure(dealii::Particles::ParticleHandler<dim> &particles,

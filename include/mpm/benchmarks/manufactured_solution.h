@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <mpm/benchmarks/benchmark.h>
+#include <mpm/benchmarks/benchmark_constants.h>
 
 namespace mpm
 {
@@ -31,8 +32,8 @@ namespace mpm
                            const double poissons_ratio,
                            const double density);
 
-      std::vector<std::string>
-      columns() const override;
+      /// From the constants G, E, nu and rho.
+      explicit ManufacturedSolution(const BenchmarkConstants &constants);
 
       std::vector<double>
       measure(dealii::Particles::ParticleHandler<dim> &particles,

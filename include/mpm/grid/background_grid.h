@@ -8,7 +8,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <mpm/parameters/parameters.h>
+#include <mpm/grid/grid_parameters.h>
 #include <mpm/shape_functions/q1_cell.h>
 
 #include <array>

@@ -5,6 +5,7 @@
 #include <deal.II/base/types.h>
 
 #include <mpm/filters/volumetric_smoothing.h>
+#include <mpm/grid/grid_parameters.h>
 #include <mpm/materials/material.h>
 #include <mpm/shape_functions/family.h>
 
@@ -15,33 +16,13 @@
 /**
  * The parameter file, one struct per subsection. Each struct declares its
  * entries (with documentation and defaults) and reads them back; the
- * user guide in doc/parameters.md follows the same order.
+ * user guide in doc/parameters.md follows the same order. The grid's
+ * subsections are in grid/grid_parameters.h.
  */
 namespace mpm
 {
   namespace Parameters
   {
-    /// Background grid: a subdivided box or a mesh file.
-    template <int dim>
-    struct Grid
-    {
-      enum class Type
-      {
-        hyper_rectangle,
-        mesh_file
-      };
-      Type                      type = Type::hyper_rectangle;
-      dealii::Point<dim>        lower, upper;
-      std::vector<unsigned int> subdivisions;
-      std::string               mesh_file;
-      unsigned int              global_refinements = 0;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
     /// Time integration and the choice of the update scheme.
     struct TimeStepping
     {
@@ -65,18 +46,6 @@ namespace mpm
       bool         apic          = false; ///< affine velocity transfer
       double       damping       = 0.0;
       unsigned int max_steps     = 0;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
-    /// What happens at the grid boundary and to particles that leave it.
-    struct BoundaryConditions
-    {
-      std::vector<dealii::types::boundary_id> fixed, slip;
-      bool                                    remove_lost_particles = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -185,27 +154,6 @@ namespace mpm
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
-    /// subsection Load balancing: repartition the grid by particle count
-    /// (grid/load_balancer.h; parsed in source/grid/load_balancer.cc).
-    struct LoadBalancing
-    {
-      /// Repartition by weight at set-up (by the planned particle counts,
-      /// or by the particles read from a checkpoint), if more than one
-      /// rank shares a 2D/3D grid.
-      bool at_setup = true;
-      /// Steps between repartitions; 0: never after set-up.
-      unsigned int interval = 0;
-      /// Work of a cell without particles (node loops, the cell loop).
-      unsigned int cell_weight = 1;
-      /// Work of one particle, in the same units.
-      unsigned int particle_weight = 10;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
     /// Everything in one place, read from one file.
     template <int dim>
     struct AllParameters
@@ -258,21 +206,5 @@ namespace mpm
      */
     void
     parse_file(dealii::ParameterHandler &prm, const std::string &file_name);
-
-    /// Parse "a, b, c" into points and numbers with a message on failure.
-    template <int dim>
-    dealii::Point<dim>
-    parse_point(const std::string &text, const std::string &entry);
-
-    /// "1, 2, 5" into boundary ids (the pattern has checked the range).
-    std::vector<dealii::types::boundary_id>
-    parse_id_list(const std::string &text);
-
-    /// Default texts of declared entries: "0; 0" for a vector-valued
-    /// expression, "v, v" for a point.
-    std::string
-    default_expression(const int dim);
-    std::string
-    default_point(const int dim, const double value);
   } // namespace Parameters
 } // namespace mpm
