@@ -521,9 +521,9 @@ namespace mpm
       enriched_filter       = prm.get("Filter field") == "enriched";
       filter_force_only     = prm.get("Filtered stress") == "force only";
       const std::string vs  = prm.get("Volumetric smoothing");
-      volumetric_smoothing = vs == "cell" ? filters::VolumetricSmoothing::cell :
-                             vs == "node" ? filters::VolumetricSmoothing::node :
-                                            filters::VolumetricSmoothing::none;
+      volumetric_smoothing = vs == "cell" ? remedies::VolumetricSmoothing::cell :
+                             vs == "node" ? remedies::VolumetricSmoothing::node :
+                                            remedies::VolumetricSmoothing::none;
       prm.leave_subsection();
       if (assumed_stress_filter && dim == 1)
         throw InputError("Locking remedies/Stress filter = assumed stress "

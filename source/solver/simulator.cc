@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <mpm/filters/stress_filter.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/particle_relocation.h>
 #include <mpm/solver/simulator.h>
@@ -142,7 +142,7 @@ namespace mpm
           balancer->repartition(params.boundary);
       }
     setup_balance[1] = LoadBalancer<dim>::balance(particle_handler, comm);
-    stress_filter    = std::make_unique<filters::StressFilter<dim>>(bodies);
+    stress_filter    = std::make_unique<remedies::StressFilter<dim>>(bodies);
     if (params.shape_functions.family != shape_functions::Family::standard)
       domain_functions =
         std::make_unique<shape_functions::DomainShapeFunctions<dim>>(
@@ -213,7 +213,7 @@ namespace mpm
                                  KinematicsLayout<dim>::n_components);
     background.initialize_vector(remap, dim);
     for (const auto &body : bodies)
-      if (body.prm.volumetric_smoothing == filters::VolumetricSmoothing::node)
+      if (body.prm.volumetric_smoothing == remedies::VolumetricSmoothing::node)
         {
           background.initialize_vector(volume_sums, 3);
           break;

@@ -1,4 +1,4 @@
-#include <mpm/filters/volumetric_smoothing.h>
+#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
@@ -56,7 +56,7 @@ namespace mpm
                 const shape_functions::DomainShapeFunctions<dim> *domains)
   {
     using L                       = ParticleLayout<dim>;
-    using Smoothing               = filters::VolumetricSmoothing;
+    using Smoothing               = remedies::VolumetricSmoothing;
     constexpr unsigned int     nv = shape_functions::n_q1<dim>;
     const double              *in = kinematics.begin();
     StressUpdateResult         result;
@@ -309,7 +309,7 @@ namespace mpm
                   }
                 if (m > 0 && J > 0)
                   {
-                    filters::smooth_volume_change<dim>(
+                    remedies::smooth_volume_change<dim>(
                       grad_v, F, J, mJ / m, mtr / m);
                     keep_smoothed_volume(prop, F);
                   }
@@ -340,7 +340,7 @@ namespace mpm
             const double J    = determinant(F);
             if (J > 0)
               {
-                filters::smooth_volume_change<dim>(
+                remedies::smooth_volume_change<dim>(
                   grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);
                 keep_smoothed_volume(prop, F);
               }

@@ -4,7 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
-#include <mpm/filters/volumetric_smoothing.h>
+#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/materials/material.h>
 #include <mpm/shape_functions/family.h>
 
@@ -132,8 +132,8 @@ namespace mpm
       /// Filtered stress = force only: the projection makes the force,
       /// the particles keep their own stresses.
       bool                         filter_force_only = false;
-      filters::VolumetricSmoothing volumetric_smoothing =
-        filters::VolumetricSmoothing::none;
+      remedies::VolumetricSmoothing volumetric_smoothing =
+        remedies::VolumetricSmoothing::none;
       bool convection_correction = false; ///< 1D only
       bool convection_body_force = true;  ///< with convection_correction
 

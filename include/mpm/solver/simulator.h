@@ -7,8 +7,8 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/benchmarks/benchmark.h>
-#include <mpm/filters/convection_correction.h>
-#include <mpm/filters/stress_filter.h>
+#include <mpm/remedies/convection_correction.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/grid/load_balancer.h>
 #include <mpm/io/checkpoint.h>
@@ -256,12 +256,12 @@ namespace mpm
     double                               next_output_time = 0;
     unsigned int last_output_step = dealii::numbers::invalid_unsigned_int;
     unsigned int n_global_sorts   = 0;
-    std::unique_ptr<filters::StressFilter<dim>> stress_filter;
+    std::unique_ptr<remedies::StressFilter<dim>> stress_filter;
     /// The particle-domain family's weights (null for standard MPM).
     std::unique_ptr<shape_functions::DomainShapeFunctions<dim>>
       domain_functions;
     /// The 1D convection correction, around the P2G passes with forces.
-    filters::ConvectionCorrection<dim> convection_correction;
+    remedies::ConvectionCorrection<dim> convection_correction;
     bool                               any_convection_correction = false;
     double                             wall_start = 0, last_progress = 0;
 

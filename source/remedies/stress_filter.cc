@@ -1,9 +1,9 @@
-#include <mpm/filters/stress_filter.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/particles/cell_loop.h>
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     using namespace dealii;
 
@@ -139,5 +139,5 @@ namespace mpm
     template class StressFilter<1>;
     template class StressFilter<2>;
     template class StressFilter<3>;
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

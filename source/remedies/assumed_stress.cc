@@ -1,4 +1,4 @@
-#include <mpm/filters/assumed_stress.h>
+#include <mpm/remedies/assumed_stress.h>
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     using namespace dealii;
 
@@ -297,5 +297,5 @@ namespace mpm
     isotropic_compliance<2>(double, double, bool);
     template SymmetricTensor<4, 3>
     isotropic_compliance<3>(double, double, bool);
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

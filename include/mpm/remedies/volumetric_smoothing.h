@@ -6,7 +6,7 @@
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     /**
      * The volumetric-locking remedy of a body (the seed's theta-bar):
@@ -50,5 +50,5 @@ namespace mpm
       for (unsigned int d = 0; d < dim; ++d)
         L[d][d] += l;
     }
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

@@ -1,4 +1,4 @@
-#include <mpm/filters/convection_correction.h>
+#include <mpm/remedies/convection_correction.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/transfer/particle_to_grid.h>
@@ -8,7 +8,7 @@
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     using namespace dealii;
 
@@ -256,5 +256,5 @@ namespace mpm
     template class ConvectionCorrection<1>;
     template class ConvectionCorrection<2>;
     template class ConvectionCorrection<3>;
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

@@ -10,7 +10,7 @@
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     /// One particle's part in a 1D cell's convection correction.
     struct AxialSample
@@ -95,5 +95,5 @@ namespace mpm
       };
       std::vector<NodalForce> nodal_forces;
     };
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm
