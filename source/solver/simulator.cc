@@ -1,8 +1,8 @@
 #include <deal.II/base/utilities.h>
 
-#include <mpm/remedies/stress_filter.h>
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/particle_relocation.h>
+#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
@@ -143,6 +143,7 @@ namespace mpm
       }
     setup_balance[1] = LoadBalancer<dim>::balance(particle_handler, comm);
     stress_filter    = std::make_unique<remedies::StressFilter<dim>>(bodies);
+    force_pass_hooks = remedies::create_force_pass_hooks(bodies);
     if (params.shape_functions.family != shape_functions::Family::standard)
       domain_functions =
         std::make_unique<shape_functions::DomainShapeFunctions<dim>>(
@@ -212,12 +213,9 @@ namespace mpm
     background.initialize_vector(kinematics,
                                  KinematicsLayout<dim>::n_components);
     background.initialize_vector(remap, dim);
-    for (const auto &body : bodies)
-      if (body.prm.volumetric_smoothing == remedies::VolumetricSmoothing::node)
-        {
-          background.initialize_vector(volume_sums, 3);
-          break;
-        }
+    if (remedies::VolumetricSmoothing<dim>::through_nodes(bodies))
+      background.initialize_vector(
+        volume_sums, remedies::VolumetricSmoothing<dim>::n_node_sums);
   }
 
   template <int dim>
@@ -287,32 +285,11 @@ namespace mpm
                                             where + "/Traction");
         layout.n_history =
           std::max(layout.n_history, body.material->n_history());
-        any_convection_correction =
-          any_convection_correction || body.prm.convection_correction;
-        double E = 0, nu = 0;
-        if (body.prm.assumed_stress_filter && body.prm.compliance_metric &&
-            !body.material->elastic_moduli(E, nu))
-          throw InputError(where +
-                           "/Locking remedies: Filter metric = compliance "
-                           "needs a material with elastic moduli; '" +
-                           body.material->name() + "' has none");
-        if (body.prm.assumed_stress_filter && body.prm.filter_force_only &&
-            body.material->n_history() > 0)
-          throw InputError(where +
-                           "/Locking remedies: Filtered stress = force only "
-                           "leaves the particles' stresses unfiltered, so '" +
-                           body.material->name() +
-                           "' would compute its plastic state from a locked "
-                           "stress; use Filtered stress = written back");
-        if (body.prm.assumed_stress_filter && body.prm.filter_force_only &&
-            !params.time.apic)
-          throw InputError(
-            where +
-            "/Locking remedies: Filtered stress = force only needs Time "
-            "stepping/Velocity transfer = APIC: the stress the projection "
-            "does not see accumulates in the particles, and with FLIP's "
-            "transfer noise it grows until the step is unstable "
-            "(doc/theory.md 4.13); use Filtered stress = written back");
+        body.prm.locking_remedies.check({where,
+                                         dim,
+                                         *body.material,
+                                         params.shape_functions.family,
+                                         params.time});
         if (body.material->n_history() > 0 && history_names.empty())
           history_names = body.material->history_names();
       }
@@ -347,10 +324,6 @@ namespace mpm
         "with the standard Q1 functions the affine transfer C_p = sum_i "
         "v_i grad N_ip extrapolates the bilinear mode beyond the cell and "
         "the step is unstable (doc/theory.md, section 9.8)");
-    if (family != Family::standard && any_convection_correction)
-      throw InputError(what + " cannot be combined with Locking remedies/"
-                              "Stress filter = convection correction, which "
-                              "is derived for standard MPM");
   }
 
   template <int dim>
@@ -696,21 +669,20 @@ namespace mpm
   void
   Simulator<dim>::particle_to_grid(const transfer::P2GContent content)
   {
-    // The 1D convection correction changes the forces of this pass only,
-    // with the cells the particles are in now: the stresses are shifted
-    // for the pass and put back after it, and the body-force correction is
-    // added to the nodal forces (doc/theory.md, section 4.11).
-    const bool correct = any_convection_correction &&
-                         (content == transfer::P2GContent::force ||
-                          content == transfer::P2GContent::mass_momentum_force);
-    if (correct)
-      {
-        TimerOutput::Scope t(timer, "convection correction");
-        convection_correction.apply(background,
-                                    particle_handler,
-                                    bodies,
-                                    current_time);
-      }
+    // Remedies around the force pass change the forces of this pass only
+    // (the 1D convection correction: doc/theory.md, section 4.11).
+    const bool force_pass =
+      content == transfer::P2GContent::force ||
+      content == transfer::P2GContent::mass_momentum_force;
+    if (force_pass)
+      for (const auto &hook : force_pass_hooks)
+        {
+          TimerOutput::Scope t(timer, hook->name());
+          hook->before_force_pass(background,
+                                  particle_handler,
+                                  bodies,
+                                  current_time);
+        }
     {
       TimerOutput::Scope t(timer, "P2G");
       const auto         e = transfer::particle_to_grid(background,
@@ -725,8 +697,9 @@ namespace mpm
       if (local_error.empty())
         local_error = e;
     }
-    if (correct)
-      convection_correction.finish(p2g);
+    if (force_pass)
+      for (const auto &hook : force_pass_hooks)
+        hook->after_force_pass(p2g);
   }
 
   template <int dim>

@@ -4,8 +4,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
-#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/materials/material.h>
+#include <mpm/remedies/selection.h>
 #include <mpm/shape_functions/family.h>
 
 #include <map>
@@ -125,17 +125,9 @@ namespace mpm
       std::string traction;         // muparser of x, X and t
       std::vector<dealii::types::boundary_id> traction_boundary_ids;
 
-      /// Locking remedies of this body (doc/theory.md).
-      bool assumed_stress_filter = false;
-      bool compliance_metric     = false;
-      bool enriched_filter       = false;
-      /// Filtered stress = force only: the projection makes the force,
-      /// the particles keep their own stresses.
-      bool                         filter_force_only = false;
-      remedies::VolumetricSmoothing volumetric_smoothing =
-        remedies::VolumetricSmoothing::none;
-      bool convection_correction = false; ///< 1D only
-      bool convection_body_force = true;  ///< with convection_correction
+      /// The locking remedies of this body, with their settings
+      /// (subsection Locking remedies; remedies/registry.h).
+      remedies::Selection locking_remedies;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

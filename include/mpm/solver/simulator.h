@@ -7,8 +7,6 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/benchmarks/benchmark.h>
-#include <mpm/remedies/convection_correction.h>
-#include <mpm/remedies/stress_filter.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/grid/load_balancer.h>
 #include <mpm/io/checkpoint.h>
@@ -17,6 +15,8 @@
 #include <mpm/parameters/parameters.h>
 #include <mpm/particles/body.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/force_pass_hook.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/transfer/particle_to_grid.h>
 
@@ -260,10 +260,10 @@ namespace mpm
     /// The particle-domain family's weights (null for standard MPM).
     std::unique_ptr<shape_functions::DomainShapeFunctions<dim>>
       domain_functions;
-    /// The 1D convection correction, around the P2G passes with forces.
-    remedies::ConvectionCorrection<dim> convection_correction;
-    bool                               any_convection_correction = false;
-    double                             wall_start = 0, last_progress = 0;
+    /// The remedies around the P2G passes with forces (the 1D convection
+    /// correction).
+    std::vector<std::unique_ptr<remedies::ForcePassHook<dim>>> force_pass_hooks;
+    double wall_start = 0, last_progress = 0;
 
     /// Hash of the coarse mesh, stored in checkpoints.
     std::string grid_fingerprint;
