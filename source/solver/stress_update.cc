@@ -89,6 +89,16 @@ namespace mpm
       return true;
     };
 
+    // One pass over the cells with particles; a domain family keeps the
+    // pass's stencils for the next one.
+    auto cell_pass = [&](const auto &cell_body) {
+      if (domains)
+        domains->begin_pass(particles.n_locally_owned_particles());
+      for_each_cell_with_particles(grid, particles, cell_body);
+      if (domains)
+        domains->end_pass(result.error.empty());
+    };
+
     // Node average: m, m J and m tr L of the new state to the nodes.
     if (any_node)
       {
@@ -96,35 +106,29 @@ namespace mpm
         NodalVector &sums = *volume_scratch;
         sums              = 0.;
         double *out       = sums.begin();
-        if (domains)
-          domains->begin_pass(particles.n_locally_owned_particles());
-        for_each_cell_with_particles(
-          grid, particles, [&](const auto &cell, const auto &pic) {
-            const auto         &geo   = grid.geometry(cell);
-            const unsigned int *nodes = grid.nodes(cell);
-            unsigned int        next  = 0; // the particle's place in the cell
-            for (const auto &p : pic)
-              {
-                const unsigned int ordinal = next++;
-                const double      *prop    = p.get_properties().data();
-                if (smoothing.average(body_of(prop)) !=
-                    remedies::VolumeAverage::node)
-                  continue;
-                Tensor<2, dim> grad_v, F;
-                if (kinematics_of(p,
-                                  geo,
-                                  nodes,
-                                  cell->active_cell_index(),
-                                  ordinal,
-                                  prop,
-                                  grad_v,
-                                  F))
-                  smoothing.add_to_nodes(
-                    out, nodes, N, prop[L::mass], grad_v, F);
-              }
-          });
-        if (domains)
-          domains->end_pass(result.error.empty());
+        cell_pass([&](const auto &cell, const auto &pic) {
+          const auto         &geo   = grid.geometry(cell);
+          const unsigned int *nodes = grid.nodes(cell);
+          unsigned int        next  = 0; // the particle's place in the cell
+          for (const auto &p : pic)
+            {
+              const unsigned int ordinal = next++;
+              const double      *prop    = p.get_properties().data();
+              if (smoothing.average(body_of(prop)) !=
+                  remedies::VolumeAverage::node)
+                continue;
+              Tensor<2, dim> grad_v, F;
+              if (kinematics_of(p,
+                                geo,
+                                nodes,
+                                cell->active_cell_index(),
+                                ordinal,
+                                prop,
+                                grad_v,
+                                F))
+                smoothing.add_to_nodes(out, nodes, N, prop[L::mass], grad_v, F);
+            }
+        });
         sums.compress(VectorOperation::add);
         sums.update_ghost_values();
       }
@@ -194,52 +198,47 @@ namespace mpm
     const double *const node_sums =
       any_node ? volume_scratch->begin() : nullptr;
 
-    if (domains)
-      domains->begin_pass(particles.n_locally_owned_particles());
-    for_each_cell_with_particles(
-      grid, particles, [&](const auto &cell, const auto &pic) {
-        const auto         &geo        = grid.geometry(cell);
-        const unsigned int *nodes      = grid.nodes(cell);
-        const unsigned int  cell_index = cell->active_cell_index();
-        const double        h          = grid.cell_height(cell);
-        if (smoothing.any())
-          {
-            smoothing.update_cell(
-              pic,
-              nodes,
-              N,
-              node_sums,
-              [&](const auto        &p,
-                  const unsigned int ordinal,
-                  const double      *prop,
-                  Tensor<2, dim>    &grad_v,
-                  Tensor<2, dim>    &F) __attribute__((always_inline)) {
-                return kinematics_of(
-                  p, geo, nodes, cell_index, ordinal, prop, grad_v, F);
-              },
-              [&](auto                 &p,
-                  double               *prop,
-                  const Tensor<2, dim> &grad_v,
-                  const Tensor<2, dim> &F) __attribute__((always_inline)) {
-                update_particle(p, prop, h, grad_v, F);
-              });
-            return;
-          }
-        unsigned int ordinal = 0;
-        for (auto &p : pic)
-          {
-            double        *prop = p.get_properties().data();
-            Tensor<2, dim> grad_v, F;
-            if (!kinematics_of(
-                  p, geo, nodes, cell_index, ordinal++, prop, grad_v, F))
-              continue;
-            store_matrix<dim>(F, prop + L::F);
-            prop[L::volume] = determinant(F) * prop[L::volume0];
-            update_particle(p, prop, h, grad_v, F);
-          }
-      });
-    if (domains)
-      domains->end_pass(result.error.empty());
+    cell_pass([&](const auto &cell, const auto &pic) {
+      const auto         &geo        = grid.geometry(cell);
+      const unsigned int *nodes      = grid.nodes(cell);
+      const unsigned int  cell_index = cell->active_cell_index();
+      const double        h          = grid.cell_height(cell);
+      if (smoothing.any())
+        {
+          smoothing.update_cell(
+            pic,
+            nodes,
+            N,
+            node_sums,
+            [&](const auto        &p,
+                const unsigned int ordinal,
+                const double      *prop,
+                Tensor<2, dim>    &grad_v,
+                Tensor<2, dim>    &F) __attribute__((always_inline)) {
+              return kinematics_of(
+                p, geo, nodes, cell_index, ordinal, prop, grad_v, F);
+            },
+            [&](auto                 &p,
+                double               *prop,
+                const Tensor<2, dim> &grad_v,
+                const Tensor<2, dim> &F) __attribute__((always_inline)) {
+              update_particle(p, prop, h, grad_v, F);
+            });
+          return;
+        }
+      unsigned int ordinal = 0;
+      for (auto &p : pic)
+        {
+          double        *prop = p.get_properties().data();
+          Tensor<2, dim> grad_v, F;
+          if (!kinematics_of(
+                p, geo, nodes, cell_index, ordinal++, prop, grad_v, F))
+            continue;
+          store_matrix<dim>(F, prop + L::F);
+          prop[L::volume] = determinant(F) * prop[L::volume0];
+          update_particle(p, prop, h, grad_v, F);
+        }
+    });
     return result;
   }
 
