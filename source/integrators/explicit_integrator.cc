@@ -116,21 +116,20 @@ namespace mpm
   void
   ExplicitIntegrator<dim>::particle_to_grid(const transfer::P2GContent content)
   {
-    // The 1D convection correction changes the forces of this pass only,
-    // with the cells the particles are in now: the stresses are shifted
-    // for the pass and put back after it, and the body-force correction is
-    // added to the nodal forces (doc/theory.md, section 4.11).
-    const bool correct = state.any_convection_correction &&
-                         (content == transfer::P2GContent::force ||
-                          content == transfer::P2GContent::mass_momentum_force);
-    if (correct)
-      {
-        TimerOutput::Scope t(state.timer, "convection correction");
-        state.convection_correction.apply(state.background,
-                                          state.particle_handler,
-                                          state.bodies,
-                                          state.current_time);
-      }
+    // Remedies around the force pass change the forces of this pass only
+    // (the 1D convection correction: doc/theory.md, section 4.11).
+    const bool force_pass =
+      content == transfer::P2GContent::force ||
+      content == transfer::P2GContent::mass_momentum_force;
+    if (force_pass)
+      for (const auto &hook : state.force_pass_hooks)
+        {
+          TimerOutput::Scope t(state.timer, hook->name());
+          hook->before_force_pass(state.background,
+                                  state.particle_handler,
+                                  state.bodies,
+                                  state.current_time);
+        }
     {
       TimerOutput::Scope t(state.timer, "P2G");
       state.local_error.record(
@@ -144,8 +143,9 @@ namespace mpm
                                    state.domain_functions.get(),
                                    state.layout.affine()));
     }
-    if (correct)
-      state.convection_correction.finish(state.p2g);
+    if (force_pass)
+      for (const auto &hook : state.force_pass_hooks)
+        hook->after_force_pass(state.p2g);
   }
 
   template <int dim>

@@ -5,6 +5,7 @@
 #include <mpm/grid/quadrilateral_mesh.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/parameters/parsing.h>
+#include <mpm/remedies/registry.h>
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/numbers.h>
@@ -257,65 +258,7 @@ namespace mpm
       materials::declare_material_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Locking remedies");
-      prm.declare_entry(
-        "Stress filter",
-        "none",
-        Patterns::Selection("none|assumed stress|convection correction"),
-        "assumed stress: project the stresses of this body's particles in "
-        "each cell onto the Pian-Sumihara field of the cell (5 parameters "
-        "in 2D, 18 in 3D) where the next internal force is computed, and "
-        "integrate that field's force exactly over the particle domains "
-        "(doc/theory.md). 2D and 3D. "
-        "convection correction: the internal force of each cell integrates "
-        "the least-squares line of its particles' stresses exactly over the "
-        "part of the cell the body occupies (the seed's correction of the "
-        "cell-crossing error); the stored stresses are not changed. 1D.");
-      prm.declare_entry(
-        "Body force correction",
-        "true",
-        Patterns::Bool(),
-        "With Stress filter = convection correction: integrate the body "
-        "force the same way, the least-squares line of the particles' force "
-        "per length integrated exactly against the shape functions over the "
-        "occupied part of each cell, consistently with the stress; the "
-        "body's total load stays sum_p m_p b_p (doc/theory.md, 4.11).");
-      prm.declare_entry("Filter metric",
-                        "mass",
-                        Patterns::Selection("mass|compliance"),
-                        "mass: the seed's projection (Frobenius inner product, "
-                        "weights m_p); compliance: the Hellinger-Reissner "
-                        "projection (inner product C^-1, weights V_p), for "
-                        "materials with elastic moduli.");
-      prm.declare_entry(
-        "Filter field",
-        "Pian-Sumihara",
-        Patterns::Selection("Pian-Sumihara|enriched"),
-        "The assumed-stress field of Stress filter = assumed stress. "
-        "Pian-Sumihara: the seed's 5-beta (2D) / 18-beta (3D) field. "
-        "enriched: adds the linear variation of each normal stress along "
-        "its own direction (7 / 21 betas), which does no work on a filled "
-        "cell's Q1 velocities but keeps a stress that varies along the "
-        "motion of a convecting body (doc/theory.md 4.8).");
-      prm.declare_entry(
-        "Filtered stress",
-        "written back",
-        Patterns::Selection("written back|force only"),
-        "What the assumed-stress projection replaces. written back: the "
-        "particles' stresses (the seed; the strains are made consistent). "
-        "force only: the projected field makes the internal force, the "
-        "particles keep the stresses their material computed, so a smooth "
-        "stress the field cannot represent is not cut back every step "
-        "(doc/theory.md 4.13). Elastic and hyperelastic materials only.");
-      prm.declare_entry(
-        "Volumetric smoothing",
-        "none",
-        Patterns::Selection("none|cell|node"),
-        "The volumetric-locking remedy: the volume change that sets the "
-        "pressure is averaged, the deviatoric part stays the particle's. "
-        "cell: over this body's particles in the cell (the seed's "
-        "theta-bar; F-bar for models that use F); node: mass-weighted to "
-        "the grid nodes and interpolated back (averages of all node-smoothed "
-        "bodies mix at shared nodes).");
+      remedies::declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -343,26 +286,8 @@ namespace mpm
       traction                = prm.get("Traction");
       traction_boundary_ids   = parse_id_list(prm.get("Traction boundary ids"));
       prm.enter_subsection("Locking remedies");
-      assumed_stress_filter = prm.get("Stress filter") == "assumed stress";
-      convection_correction =
-        prm.get("Stress filter") == "convection correction";
-      convection_body_force = prm.get_bool("Body force correction");
-      compliance_metric     = prm.get("Filter metric") == "compliance";
-      enriched_filter       = prm.get("Filter field") == "enriched";
-      filter_force_only     = prm.get("Filtered stress") == "force only";
-      const std::string vs  = prm.get("Volumetric smoothing");
-      volumetric_smoothing = vs == "cell" ? filters::VolumetricSmoothing::cell :
-                             vs == "node" ? filters::VolumetricSmoothing::node :
-                                            filters::VolumetricSmoothing::none;
+      locking_remedies = remedies::parse_selection(prm);
       prm.leave_subsection();
-      if (assumed_stress_filter && dim == 1)
-        throw InputError("Locking remedies/Stress filter = assumed stress "
-                         "needs Dimension 2 or 3");
-      if (convection_correction && dim != 1)
-        throw InputError("Locking remedies/Stress filter = convection "
-                         "correction is the 1D correction of the "
-                         "cell-crossing error and needs Dimension 1 (in 2D "
-                         "and 3D use assumed stress)");
       if (geometry == Geometry::box)
         for (unsigned int d = 0; d < dim; ++d)
           if (!(upper[d] > lower[d]))

@@ -114,32 +114,11 @@ namespace mpm
                                             where + "/Traction");
         state.layout.n_history =
           std::max(state.layout.n_history, body.material->n_history());
-        state.any_convection_correction =
-          state.any_convection_correction || body.prm.convection_correction;
-        double E = 0, nu = 0;
-        if (body.prm.assumed_stress_filter && body.prm.compliance_metric &&
-            !body.material->elastic_moduli(E, nu))
-          throw InputError(where +
-                           "/Locking remedies: Filter metric = compliance "
-                           "needs a material with elastic moduli; '" +
-                           body.material->name() + "' has none");
-        if (body.prm.assumed_stress_filter && body.prm.filter_force_only &&
-            body.material->n_history() > 0)
-          throw InputError(where +
-                           "/Locking remedies: Filtered stress = force only "
-                           "leaves the particles' stresses unfiltered, so '" +
-                           body.material->name() +
-                           "' would compute its plastic state from a locked "
-                           "stress; use Filtered stress = written back");
-        if (body.prm.assumed_stress_filter && body.prm.filter_force_only &&
-            !params.time.apic)
-          throw InputError(
-            where +
-            "/Locking remedies: Filtered stress = force only needs Time "
-            "stepping/Velocity transfer = APIC: the stress the projection "
-            "does not see accumulates in the particles, and with FLIP's "
-            "transfer noise it grows until the step is unstable "
-            "(doc/theory.md 4.13); use Filtered stress = written back");
+        body.prm.locking_remedies.check({where,
+                                         dim,
+                                         *body.material,
+                                         params.shape_functions.family,
+                                         params.time});
         if (body.material->n_history() > 0 && history_names.empty())
           history_names = body.material->history_names();
       }
@@ -176,10 +155,6 @@ namespace mpm
         "with the standard Q1 functions the affine transfer C_p = sum_i "
         "v_i grad N_ip extrapolates the bilinear mode beyond the cell and "
         "the step is unstable (doc/theory.md, section 9.8)");
-    if (family != Family::standard && state.any_convection_correction)
-      throw InputError(what + " cannot be combined with Locking remedies/"
-                              "Stress filter = convection correction, which "
-                              "is derived for standard MPM");
   }
 
   template <int dim>

@@ -1,4 +1,5 @@
 #include <mpm/grid/grid_update.h>
+#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/solver/simulation_state.h>
 #include <mpm/transfer/particle_to_grid.h>
 
@@ -12,12 +13,9 @@ namespace mpm
     background.initialize_vector(kinematics,
                                  KinematicsLayout<dim>::n_components);
     background.initialize_vector(remap, dim);
-    for (const auto &body : bodies)
-      if (body.prm.volumetric_smoothing == filters::VolumetricSmoothing::node)
-        {
-          background.initialize_vector(volume_sums, 3);
-          break;
-        }
+    if (remedies::VolumetricSmoothing<dim>::through_nodes(bodies))
+      background.initialize_vector(
+        volume_sums, remedies::VolumetricSmoothing<dim>::n_node_sums);
   }
 
   template struct SimulationState<1>;

@@ -68,7 +68,8 @@ namespace mpm
       }
     setup_balance[1] = LoadBalancer<dim>::balance(state.particle_handler, comm);
     state.stress_filter =
-      std::make_unique<filters::StressFilter<dim>>(state.bodies);
+      std::make_unique<remedies::StressFilter<dim>>(state.bodies);
+    state.force_pass_hooks = remedies::create_force_pass_hooks(state.bodies);
     if (params.shape_functions.family != shape_functions::Family::standard)
       state.domain_functions =
         std::make_unique<shape_functions::DomainShapeFunctions<dim>>(

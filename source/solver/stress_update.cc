@@ -1,7 +1,7 @@
-#include <mpm/filters/volumetric_smoothing.h>
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/velocity_gradient.h>
@@ -16,33 +16,21 @@ namespace mpm
 
   namespace
   {
-    /// Nodal sums of the node-smoothed particles: m, m J, m tr L.
-    constexpr unsigned int n_volume_components = 3;
-
     /// The step's kinematics of the particle with properties @p prop:
     /// L_p = @p grad_v and F = (I + dt L) F_old.
     template <int dim>
-    struct StepKinematics
-    {
-      Tensor<2, dim> grad_v, F;
-    };
-
-    template <int dim>
-    inline StepKinematics<dim>
+    inline void
     step_kinematics(const Tensor<2, dim> &grad_v,
                     const double         *prop,
-                    const double          dt)
+                    const double          dt,
+                    Tensor<2, dim>       &L_p,
+                    Tensor<2, dim>       &F)
     {
       using L                    = ParticleLayout<dim>;
       const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
-      return {grad_v, F_old + dt * grad_v * F_old};
+      L_p                        = grad_v;
+      F                          = F_old + dt * grad_v * F_old;
     }
-
-    /// Per-body sums of one cell for the cell average.
-    struct CellVolumeSums
-    {
-      double V0 = 0, V = 0, V_old = 0, V_old_trL = 0;
-    };
   } // namespace
 
   template <int dim>
@@ -56,7 +44,6 @@ namespace mpm
                 const shape_functions::DomainShapeFunctions<dim> *domains)
   {
     using L                       = ParticleLayout<dim>;
-    using Smoothing               = filters::VolumetricSmoothing;
     constexpr unsigned int     nv = shape_functions::n_q1<dim>;
     const double              *in = kinematics.begin();
     StressUpdateResult         result;
@@ -65,15 +52,9 @@ namespace mpm
     materials::PointKinematics pk;
     pk.dt = dt;
 
-    std::vector<Smoothing> smoothing(bodies.size());
-    bool                   any_cell = false, any_node = false;
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        smoothing[b] = bodies[b].prm.volumetric_smoothing;
-        any_cell     = any_cell || smoothing[b] == Smoothing::cell;
-        any_node     = any_node || smoothing[b] == Smoothing::node;
-      }
-    auto body_of = [&](const double *prop) {
+    remedies::VolumetricSmoothing<dim> smoothing(bodies);
+    const bool                         any_node = smoothing.any_node_average();
+    auto                               body_of  = [&](const double *prop) {
       return static_cast<unsigned int>(prop[L::body]);
     };
 
@@ -81,30 +62,41 @@ namespace mpm
     // (for the node average). Standard MPM takes grad N of the cell; the
     // domain families their stencil. False for a bad particle domain.
     shape_functions::Stencil<dim> stencil;
-    auto                          kinematics_of = [&](const auto          &p,
-                             const auto          &geo,
-                             const unsigned int  *nodes,
-                             const unsigned int   cell_index,
-                             const unsigned int   ordinal,
-                             const double        *prop,
-                             StepKinematics<dim> &k) {
+    auto                          kinematics_of = [&](const auto         &p,
+                             const auto         &geo,
+                             const unsigned int *nodes,
+                             const unsigned int  cell_index,
+                             const unsigned int  ordinal,
+                             const double       *prop,
+                             Tensor<2, dim>     &grad_v,
+                             Tensor<2, dim>     &F) {
       if (!domains)
         {
           geo.values_and_gradients(p.get_reference_location(), N, G);
-          k =
-            step_kinematics<dim>(transfer::velocity_gradient<dim>(in, nodes, G),
-                                 prop,
-                                 dt);
+          step_kinematics<dim>(transfer::velocity_gradient<dim>(in, nodes, G),
+                               prop,
+                               dt,
+                               grad_v,
+                               F);
           return true;
         }
       if (any_node) // the node average's Q1 values
         geo.values(p.get_reference_location(), N);
       if (!domains->evaluate(cell_index, ordinal, p, stencil, result.error))
         return false;
-      k = step_kinematics<dim>(transfer::velocity_gradient<dim>(in, stencil),
-                               prop,
-                               dt);
+      step_kinematics<dim>(
+        transfer::velocity_gradient<dim>(in, stencil), prop, dt, grad_v, F);
       return true;
+    };
+
+    // One pass over the cells with particles; a domain family keeps the
+    // pass's stencils for the next one.
+    auto cell_pass = [&](const auto &cell_body) {
+      if (domains)
+        domains->begin_pass(particles.n_locally_owned_particles());
+      for_each_cell_with_particles(grid, particles, cell_body);
+      if (domains)
+        domains->end_pass(result.error.empty());
     };
 
     // Node average: m, m J and m tr L of the new state to the nodes.
@@ -114,42 +106,29 @@ namespace mpm
         NodalVector &sums = *volume_scratch;
         sums              = 0.;
         double *out       = sums.begin();
-        if (domains)
-          domains->begin_pass(particles.n_locally_owned_particles());
-        for_each_cell_with_particles(
-          grid, particles, [&](const auto &cell, const auto &pic) {
-            const auto         &geo   = grid.geometry(cell);
-            const unsigned int *nodes = grid.nodes(cell);
-            unsigned int        next  = 0; // the particle's place in the cell
-            for (const auto &p : pic)
-              {
-                const unsigned int ordinal = next++;
-                const double      *prop    = p.get_properties().data();
-                if (smoothing[body_of(prop)] != Smoothing::node)
-                  continue;
-                StepKinematics<dim> k;
-                if (!kinematics_of(p,
-                                   geo,
-                                   nodes,
-                                   cell->active_cell_index(),
-                                   ordinal,
-                                   prop,
-                                   k))
-                  continue;
-                const auto &[grad_v, F] = k;
-                const double J          = determinant(F);
-                const double m          = prop[L::mass];
-                for (unsigned int v = 0; v < nv; ++v)
-                  {
-                    double *node = out + nodes[v] * n_volume_components;
-                    node[0] += N[v] * m;
-                    node[1] += N[v] * m * J;
-                    node[2] += N[v] * m * trace(grad_v);
-                  }
-              }
-          });
-        if (domains)
-          domains->end_pass(result.error.empty());
+        cell_pass([&](const auto &cell, const auto &pic) {
+          const auto         &geo   = grid.geometry(cell);
+          const unsigned int *nodes = grid.nodes(cell);
+          unsigned int        next  = 0; // the particle's place in the cell
+          for (const auto &p : pic)
+            {
+              const unsigned int ordinal = next++;
+              const double      *prop    = p.get_properties().data();
+              if (smoothing.average(body_of(prop)) !=
+                  remedies::VolumeAverage::node)
+                continue;
+              Tensor<2, dim> grad_v, F;
+              if (kinematics_of(p,
+                                geo,
+                                nodes,
+                                cell->active_cell_index(),
+                                ordinal,
+                                prop,
+                                grad_v,
+                                F))
+                smoothing.add_to_nodes(out, nodes, N, prop[L::mass], grad_v, F);
+            }
+        });
         sums.compress(VectorOperation::add);
         sums.update_ghost_values();
       }
@@ -216,139 +195,50 @@ namespace mpm
         }
     };
 
-    // Models whose state is J alone (the fluid) keep the smoothed volume
-    // (Material::state_is_volume_ratio).
-    auto keep_smoothed_volume = [&](double *prop, const Tensor<2, dim> &F) {
-      if (bodies[body_of(prop)].material->state_is_volume_ratio())
-        {
-          store_matrix<dim>(F, prop + L::F);
-          prop[L::volume] = determinant(F) * prop[L::volume0];
-        }
-    };
-
-    // Kinematics of the cell's particles, kept while the cell averages
-    // are summed.
-    struct Buffered
-    {
-      Tensor<2, dim> grad_v, F;
-    };
-    std::vector<Buffered>       buffer;
-    std::vector<CellVolumeSums> cell_sums(bodies.size());
-    const double *const         volume_sums =
+    const double *const node_sums =
       any_node ? volume_scratch->begin() : nullptr;
 
-    if (domains)
-      domains->begin_pass(particles.n_locally_owned_particles());
-    for_each_cell_with_particles(
-      grid, particles, [&](const auto &cell, const auto &pic) {
-        const auto         &geo   = grid.geometry(cell);
-        const unsigned int *nodes = grid.nodes(cell);
-        const double        h     = grid.cell_height(cell);
-        if (!any_cell && !any_node)
-          {
-            // no smoothing: one pass
-            unsigned int ordinal = 0;
-            for (auto &p : pic)
-              {
-                double             *prop = p.get_properties().data();
-                StepKinematics<dim> k;
-                if (!kinematics_of(p,
-                                   geo,
-                                   nodes,
-                                   cell->active_cell_index(),
-                                   ordinal++,
-                                   prop,
-                                   k))
-                  continue;
-                const auto &[grad_v, F] = k;
-                store_matrix<dim>(F, prop + L::F);
-                prop[L::volume] = determinant(F) * prop[L::volume0];
-                update_particle(p, prop, h, grad_v, F);
-              }
-            return;
-          }
-        buffer.clear();
-        if (any_cell)
-          std::fill(cell_sums.begin(), cell_sums.end(), CellVolumeSums());
-        unsigned int ordinal = 0;
-        for (auto &p : pic)
-          {
-            double             *prop = p.get_properties().data();
-            StepKinematics<dim> k;
-            if (!kinematics_of(
-                  p, geo, nodes, cell->active_cell_index(), ordinal++, prop, k))
-              {
-                // keep the cell average's bookkeeping in step
-                if (smoothing[body_of(prop)] == Smoothing::cell)
-                  buffer.push_back(
-                    {Tensor<2, dim>(), load_matrix<dim>(prop + L::F)});
-                continue;
-              }
-            auto &[grad_v, F] = k;
-            store_matrix<dim>(F, prop + L::F);
-            const double J      = determinant(F);
-            const double V_old  = prop[L::volume];
-            prop[L::volume]     = J * prop[L::volume0];
-            const Smoothing how = smoothing[body_of(prop)];
-            if (how == Smoothing::none)
+    cell_pass([&](const auto &cell, const auto &pic) {
+      const auto         &geo        = grid.geometry(cell);
+      const unsigned int *nodes      = grid.nodes(cell);
+      const unsigned int  cell_index = cell->active_cell_index();
+      const double        h          = grid.cell_height(cell);
+      if (smoothing.any())
+        {
+          smoothing.update_cell(
+            pic,
+            nodes,
+            N,
+            node_sums,
+            [&](const auto        &p,
+                const unsigned int ordinal,
+                const double      *prop,
+                Tensor<2, dim>    &grad_v,
+                Tensor<2, dim>    &F) __attribute__((always_inline)) {
+              return kinematics_of(
+                p, geo, nodes, cell_index, ordinal, prop, grad_v, F);
+            },
+            [&](auto                 &p,
+                double               *prop,
+                const Tensor<2, dim> &grad_v,
+                const Tensor<2, dim> &F) __attribute__((always_inline)) {
               update_particle(p, prop, h, grad_v, F);
-            else if (how == Smoothing::node)
-              {
-                // J and tr L interpolated from the nodal mass averages
-                double m = 0, mJ = 0, mtr = 0;
-                for (unsigned int v = 0; v < nv; ++v)
-                  {
-                    const double *node =
-                      volume_sums + nodes[v] * n_volume_components;
-                    if (node[0] > 0)
-                      {
-                        m += N[v];
-                        mJ += N[v] * node[1] / node[0];
-                        mtr += N[v] * node[2] / node[0];
-                      }
-                  }
-                if (m > 0 && J > 0)
-                  {
-                    filters::smooth_volume_change<dim>(
-                      grad_v, F, J, mJ / m, mtr / m);
-                    keep_smoothed_volume(prop, F);
-                  }
-                update_particle(p, prop, h, grad_v, F);
-              }
-            else
-              {
-                auto &sum = cell_sums[body_of(prop)];
-                sum.V0 += prop[L::volume0];
-                sum.V += prop[L::volume];
-                sum.V_old += V_old;
-                sum.V_old_trL += V_old * trace(grad_v);
-                buffer.push_back({grad_v, F});
-              }
-          }
-        if (buffer.empty())
+            });
           return;
-        // Cell average: J_bar = sum V / sum V0, theta_bar = sum V tr L /
-        // sum V (volumes before the step), per body.
-        unsigned int k = 0;
-        for (auto &p : pic)
-          {
-            double *prop = p.get_properties().data();
-            if (smoothing[body_of(prop)] != Smoothing::cell)
-              continue;
-            auto &[grad_v, F] = buffer[k++];
-            const auto  &sum  = cell_sums[body_of(prop)];
-            const double J    = determinant(F);
-            if (J > 0)
-              {
-                filters::smooth_volume_change<dim>(
-                  grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);
-                keep_smoothed_volume(prop, F);
-              }
-            update_particle(p, prop, h, grad_v, F);
-          }
-      });
-    if (domains)
-      domains->end_pass(result.error.empty());
+        }
+      unsigned int ordinal = 0;
+      for (auto &p : pic)
+        {
+          double        *prop = p.get_properties().data();
+          Tensor<2, dim> grad_v, F;
+          if (!kinematics_of(
+                p, geo, nodes, cell_index, ordinal++, prop, grad_v, F))
+            continue;
+          store_matrix<dim>(F, prop + L::F);
+          prop[L::volume] = determinant(F) * prop[L::volume0];
+          update_particle(p, prop, h, grad_v, F);
+        }
+    });
     return result;
   }
 
@@ -379,40 +269,20 @@ namespace mpm
     return dt;
   }
 
-  template StressUpdateResult
-  update_stress<1>(const BackgroundGrid<1> &,
-                   Particles::ParticleHandler<1> &,
-                   const std::vector<Body<1>> &,
-                   const NodalVector &,
-                   double,
-                   NodalVector *,
-                   const shape_functions::DomainShapeFunctions<1> *);
-  template StressUpdateResult
-  update_stress<2>(const BackgroundGrid<2> &,
-                   Particles::ParticleHandler<2> &,
-                   const std::vector<Body<2>> &,
-                   const NodalVector &,
-                   double,
-                   NodalVector *,
-                   const shape_functions::DomainShapeFunctions<2> *);
-  template StressUpdateResult
-  update_stress<3>(const BackgroundGrid<3> &,
-                   Particles::ParticleHandler<3> &,
-                   const std::vector<Body<3>> &,
-                   const NodalVector &,
-                   double,
-                   NodalVector *,
-                   const shape_functions::DomainShapeFunctions<3> *);
-  template double
-  stable_time_step<1>(const BackgroundGrid<1> &,
-                      Particles::ParticleHandler<1> &,
-                      const std::vector<Body<1>> &);
-  template double
-  stable_time_step<2>(const BackgroundGrid<2> &,
-                      Particles::ParticleHandler<2> &,
-                      const std::vector<Body<2>> &);
-  template double
-  stable_time_step<3>(const BackgroundGrid<3> &,
-                      Particles::ParticleHandler<3> &,
-                      const std::vector<Body<3>> &);
+#define MPM_INSTANTIATE(d)                                             \
+  template StressUpdateResult update_stress<d>(                        \
+    const BackgroundGrid<d> &,                                         \
+    Particles::ParticleHandler<d> &,                                   \
+    const std::vector<Body<d>> &,                                      \
+    const NodalVector &,                                               \
+    double,                                                            \
+    NodalVector *,                                                     \
+    const shape_functions::DomainShapeFunctions<d> *);                 \
+  template double stable_time_step<d>(const BackgroundGrid<d> &,       \
+                                      Particles::ParticleHandler<d> &, \
+                                      const std::vector<Body<d>> &);
+  MPM_INSTANTIATE(1)
+  MPM_INSTANTIATE(2)
+  MPM_INSTANTIATE(3)
+#undef MPM_INSTANTIATE
 } // namespace mpm

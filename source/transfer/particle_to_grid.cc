@@ -1,6 +1,6 @@
-#include <mpm/filters/assumed_stress.h>
-#include <mpm/filters/assumed_stress_force.h>
-#include <mpm/filters/stress_filter.h>
+#include <mpm/remedies/assumed_stress.h>
+#include <mpm/remedies/assumed_stress_force.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
@@ -37,7 +37,7 @@ namespace mpm
                      const double                     time,
                      const P2GContent                 content,
                      NodalVector                     &nodal,
-                     filters::StressFilter<dim>      *filter,
+                     remedies::StressFilter<dim>      *filter,
                      const shape_functions::DomainShapeFunctions<dim> *domains,
                      const unsigned int                                affine)
     {
@@ -78,7 +78,7 @@ namespace mpm
       // integrated over the particle domains (AssumedStressForce).
       constexpr bool has_filter = dim > 1;
       constexpr int  fdim       = dim == 1 ? 2 : dim; // no filter in 1D
-      using Force               = filters::AssumedStressForce<fdim>;
+      using Force               = remedies::AssumedStressForce<fdim>;
       const bool filtering = has_filter && do_force && filter && filter->any();
       std::vector<Force>        field_force(filtering ? bodies.size() : 0);
       std::vector<unsigned int> force_bodies;
@@ -209,11 +209,11 @@ namespace mpm
           for (const unsigned int b : force_bodies)
             {
               double
-                beta[filters::AssumedStressProjection<3>::n_beta]; // the
+                beta[remedies::AssumedStressProjection<3>::n_beta]; // the
                                                                    // largest
               double     f[nv * dim] = {};
               const auto result      = filter->finish_cell(pic, b, beta);
-              if (result != filters::StressFilter<dim>::Result::unchanged)
+              if (result != remedies::StressFilter<dim>::Result::unchanged)
                 field_force[b].add_internal_force(geo,
                                                   filter->projection(b),
                                                   beta,
@@ -280,7 +280,7 @@ namespace mpm
                         double,
                         P2GContent,
                         NodalVector &,
-                        filters::StressFilter<1> *,
+                        remedies::StressFilter<1> *,
                         const shape_functions::DomainShapeFunctions<1> *,
                         unsigned int);
     template std::string
@@ -290,7 +290,7 @@ namespace mpm
                         double,
                         P2GContent,
                         NodalVector &,
-                        filters::StressFilter<2> *,
+                        remedies::StressFilter<2> *,
                         const shape_functions::DomainShapeFunctions<2> *,
                         unsigned int);
     template std::string
@@ -300,7 +300,7 @@ namespace mpm
                         double,
                         P2GContent,
                         NodalVector &,
-                        filters::StressFilter<3> *,
+                        remedies::StressFilter<3> *,
                         const shape_functions::DomainShapeFunctions<3> *,
                         unsigned int);
   } // namespace transfer

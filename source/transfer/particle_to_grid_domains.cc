@@ -1,4 +1,4 @@
-#include <mpm/filters/stress_filter.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
@@ -20,7 +20,7 @@ namespace mpm
       const double                                      time,
       const P2GContent                                  content,
       NodalVector                                      &nodal,
-      filters::StressFilter<dim>                       *filter,
+      remedies::StressFilter<dim>                       *filter,
       const shape_functions::DomainShapeFunctions<dim> &domains,
       const unsigned int                                affine)
     {
@@ -63,12 +63,12 @@ namespace mpm
                   present[static_cast<unsigned int>(
                     p.get_properties()[L::body])] = 1;
                 const Tensor<2, dim> J0 = grid.geometry(cell).jacobian(centre);
-                double               beta[filters::StressFilter<dim>::n_beta];
+                double               beta[remedies::StressFilter<dim>::n_beta];
                 for (unsigned int b = 0; b < bodies.size(); ++b)
                   by_field[b] =
                     present[b] && filter->filtered(b) &&
                     filter->filter_cell(J0, pic, b, beta) !=
-                      filters::StressFilter<dim>::Result::unchanged &&
+                      remedies::StressFilter<dim>::Result::unchanged &&
                     !filter->writes_back(b);
               }
           const unsigned int index   = cell->active_cell_index();
@@ -165,7 +165,7 @@ namespace mpm
     double,                                           \
     P2GContent,                                       \
     NodalVector &,                                    \
-    filters::StressFilter<d> *,                       \
+    remedies::StressFilter<d> *,                       \
     const shape_functions::DomainShapeFunctions<d> &, \
     unsigned int);
     MPM_INSTANTIATE(1)

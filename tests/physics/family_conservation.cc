@@ -50,7 +50,7 @@ namespace
                                  sim.time(),
                                  transfer::P2GContent::mass_momentum,
                                  nodal,
-                                 static_cast<filters::StressFilter<dim> *>(
+                                 static_cast<remedies::StressFilter<dim> *>(
                                    nullptr),
                                  domains);
     double local[1 + dim] = {};

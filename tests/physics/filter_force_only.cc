@@ -5,7 +5,7 @@
 // field, which the Pian-Sumihara field cannot represent, so the
 // written-back filter must change the particle stresses and the
 // force-only one must not. Serial and on 2 ranks.
-#include <mpm/filters/stress_filter.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/transfer/particle_to_grid.h>
@@ -71,7 +71,7 @@ end)");
     if (f != shape_functions::Family::standard)
       domains = std::make_unique<shape_functions::DomainShapeFunctions<dim>>(
         sim.grid(), f, false, ParticleLayout<dim>().corners());
-    filters::StressFilter<dim> filter(sim.get_bodies());
+    remedies::StressFilter<dim> filter(sim.get_bodies());
 
     ForceAndStress r;
     r.stress_norm = 0;

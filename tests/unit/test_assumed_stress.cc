@@ -6,7 +6,7 @@
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK
 #endif
-#include <mpm/filters/assumed_stress.h>
+#include <mpm/remedies/assumed_stress.h>
 #include <mpm/shape_functions/q1_cell.h>
 
 #include <random>
@@ -14,7 +14,7 @@
 #include <boost/test/unit_test.hpp>
 
 using namespace dealii;
-using namespace mpm::filters;
+using namespace mpm::remedies;
 
 namespace
 {

@@ -13,8 +13,8 @@
 #endif
 #include <deal.II/base/quadrature_lib.h>
 
-#include <mpm/filters/assumed_stress.h>
-#include <mpm/filters/assumed_stress_force.h>
+#include <mpm/remedies/assumed_stress.h>
+#include <mpm/remedies/assumed_stress_force.h>
 #include <mpm/shape_functions/q1_cell.h>
 
 #include <random>
@@ -22,7 +22,7 @@
 #include <boost/test/unit_test.hpp>
 
 using namespace dealii;
-using namespace mpm::filters;
+using namespace mpm::remedies;
 
 namespace
 {

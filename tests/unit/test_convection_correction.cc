@@ -8,13 +8,13 @@
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK
 #endif
-#include <mpm/filters/convection_correction.h>
+#include <mpm/remedies/convection_correction.h>
 
 #include <random>
 
 #include <boost/test/unit_test.hpp>
 
-using namespace mpm::filters;
+using namespace mpm::remedies;
 
 namespace
 {

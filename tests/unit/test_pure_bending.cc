@@ -16,7 +16,7 @@
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK
 #endif
-#include <mpm/filters/assumed_stress.h>
+#include <mpm/remedies/assumed_stress.h>
 #include <mpm/shape_functions/q1_cell.h>
 
 #include <cmath>
@@ -26,7 +26,7 @@
 #include <boost/test/unit_test.hpp>
 
 using namespace dealii;
-using namespace mpm::filters;
+using namespace mpm::remedies;
 using mpm::shape_functions::Q1Cell;
 namespace tt = boost::test_tools;
 

@@ -4,9 +4,9 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
-#include <mpm/filters/volumetric_smoothing.h>
 #include <mpm/grid/grid_parameters.h>
 #include <mpm/materials/material.h>
+#include <mpm/remedies/selection.h>
 #include <mpm/shape_functions/family.h>
 
 #include <map>
@@ -94,17 +94,9 @@ namespace mpm
       std::string traction;         // muparser of x, X and t
       std::vector<dealii::types::boundary_id> traction_boundary_ids;
 
-      /// Locking remedies of this body (doc/theory.md).
-      bool assumed_stress_filter = false;
-      bool compliance_metric     = false;
-      bool enriched_filter       = false;
-      /// Filtered stress = force only: the projection makes the force,
-      /// the particles keep their own stresses.
-      bool                         filter_force_only = false;
-      filters::VolumetricSmoothing volumetric_smoothing =
-        filters::VolumetricSmoothing::none;
-      bool convection_correction = false; ///< 1D only
-      bool convection_body_force = true;  ///< with convection_correction
+      /// The locking remedies of this body, with their settings
+      /// (subsection Locking remedies; remedies/registry.h).
+      remedies::Selection locking_remedies;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

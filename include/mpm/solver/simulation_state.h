@@ -5,13 +5,13 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/particles/particle_handler.h>
 
-#include <mpm/filters/convection_correction.h>
-#include <mpm/filters/stress_filter.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/grid/load_balancer.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/particles/body.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/force_pass_hook.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/utilities/collective_errors.h>
 
@@ -58,11 +58,11 @@ namespace mpm
 
     /// The particle-domain family's weights (null for standard MPM).
     std::unique_ptr<shape_functions::DomainShapeFunctions<dim>>
-                                                domain_functions;
-    std::unique_ptr<filters::StressFilter<dim>> stress_filter;
-    /// The 1D convection correction, around the P2G passes with forces.
-    filters::ConvectionCorrection<dim> convection_correction;
-    bool                               any_convection_correction = false;
+                                                 domain_functions;
+    std::unique_ptr<remedies::StressFilter<dim>> stress_filter;
+    /// The remedies around the P2G passes with forces (the 1D convection
+    /// correction).
+    std::vector<std::unique_ptr<remedies::ForcePassHook<dim>>> force_pass_hooks;
     /// Null unless load balancing is on.
     std::unique_ptr<LoadBalancer<dim>> balancer;
 

@@ -32,7 +32,7 @@ namespace mpm
    * the stable time step of the new state.
    *
    * Bodies with Volumetric smoothing hand their material a smoothed
-   * volume change (filters::smooth_volume_change): averaged over the
+   * volume change (remedies::VolumetricSmoothing): averaged over the
    * body's particles in the cell, or through the nodes, for which
    * @p volume_scratch (3 components per node) must be given.
    *

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace mpm::filters
+namespace mpm::remedies
 {
   template <int dim>
   class StressFilter;
@@ -65,10 +65,10 @@ namespace mpm
      * compresses it. (MUSL's re-map of the new momenta is part of G2P.)
      *
      * With @p filter, the bodies it filters get their stresses projected
-     * per cell here (filters::StressFilter, written back to the
+     * per cell here (remedies::StressFilter, written back to the
      * particles), and the internal force of the projected field is
      * integrated exactly over the particle domains
-     * (filters::AssumedStressForce) instead of summing the particles'
+     * (remedies::AssumedStressForce) instead of summing the particles'
      * stresses.
      *
      * With @p domains (GIMP, CPDI, CPDI2) the weights are the family's
@@ -89,7 +89,7 @@ namespace mpm
       const double                                      time,
       const P2GContent                                  content,
       NodalVector                                      &nodal,
-      filters::StressFilter<dim>                       *filter  = nullptr,
+      remedies::StressFilter<dim>                       *filter  = nullptr,
       const shape_functions::DomainShapeFunctions<dim> *domains = nullptr,
       const unsigned int                                affine  = 0);
 
@@ -110,7 +110,7 @@ namespace mpm
       const double                                      time,
       const P2GContent                                  content,
       NodalVector                                      &nodal,
-      filters::StressFilter<dim>                       *filter,
+      remedies::StressFilter<dim>                       *filter,
       const shape_functions::DomainShapeFunctions<dim> &domains,
       const unsigned int                                affine);
   } // namespace transfer

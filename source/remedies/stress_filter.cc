@@ -1,9 +1,10 @@
-#include <mpm/filters/stress_filter.h>
 #include <mpm/particles/cell_loop.h>
+#include <mpm/remedies/assumed_stress_remedy.h>
+#include <mpm/remedies/stress_filter.h>
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     using namespace dealii;
 
@@ -25,14 +26,19 @@ namespace mpm
     {
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          is_filtered[b] = bodies[b].prm.assumed_stress_filter;
-          enriched[b]    = bodies[b].prm.enriched_filter;
-          write_back[b]  = !bodies[b].prm.filter_force_only;
-          material[b]    = bodies[b].material.get();
-          n_history[b]   = material[b]->n_history();
-          any_filtered   = any_filtered || is_filtered[b];
-          metric[b] =
-            bodies[b].prm.compliance_metric ? Metric::compliance : Metric::mass;
+          const auto *choice =
+            bodies[b]
+              .prm.locking_remedies.template find<AssumedStressSettings>();
+          material[b]  = bodies[b].material.get();
+          n_history[b] = material[b]->n_history();
+          if (choice)
+            {
+              is_filtered[b] = 1;
+              any_filtered   = true;
+              enriched[b]    = choice->enriched;
+              write_back[b]  = choice->write_back;
+              metric[b]      = choice->metric;
+            }
           double E = 0, nu = 0;
           if (dim == 2 && bodies[b].material->elastic_moduli(E, nu) &&
               bodies[b].material->kinematic_assumption() ==
@@ -139,5 +145,5 @@ namespace mpm
     template class StressFilter<1>;
     template class StressFilter<2>;
     template class StressFilter<3>;
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

@@ -2,7 +2,7 @@
 
 #include <deal.II/particles/particle_handler.h>
 
-#include <mpm/filters/assumed_stress.h>
+#include <mpm/remedies/assumed_stress.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/particles/body.h>
 #include <mpm/particles/particle_layout.h>
@@ -12,7 +12,7 @@
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     /**
      * The assumed-stress filter of the bodies with `Stress filter =
@@ -233,5 +233,5 @@ namespace mpm
           return result;
         }
     }
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

@@ -4,13 +4,14 @@
 
 #include <mpm/grid/background_grid.h>
 #include <mpm/particles/body.h>
+#include <mpm/remedies/force_pass_hook.h>
 
 #include <utility>
 #include <vector>
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     /// One particle's part in a 1D cell's convection correction.
     struct AxialSample
@@ -58,31 +59,34 @@ namespace mpm
      * The 1D convection correction of the cell-crossing error, for the
      * bodies with `Stress filter = convection correction`. It changes the
      * forces of one P2G pass only, with the cells the particles are in:
-     * apply() shifts the particles' sigma_xx cell by cell
-     * (convection_shift()) just before the pass and, with `Body force
-     * correction`, computes the difference between the exact nodal
-     * integrals of the cell's linear body-force field and the particle
-     * sums; finish() puts the material's stresses back, bit for bit, and
-     * adds those differences to the nodal forces. Between the two, no
-     * particle may move or be added (finish() keeps pointers into the
-     * particle properties). In 2D and 3D (refused by the parameters)
+     * before_force_pass() shifts the particles' sigma_xx cell by cell
+     * (convection_shift()) and, with `Body force correction`, computes the
+     * difference between the exact nodal integrals of the cell's linear
+     * body-force field and the particle sums; after_force_pass() puts the
+     * material's stresses back, bit for bit, and adds those differences to
+     * the nodal forces (it keeps pointers into the particle properties
+     * between the two). In 2D and 3D (refused by the remedy's check)
      * nothing is done.
      */
     template <int dim>
-    class ConvectionCorrection
+    class ConvectionCorrection : public ForcePassHook<dim>
     {
     public:
-      void
-      apply(const BackgroundGrid<dim>               &grid,
-            dealii::Particles::ParticleHandler<dim> &particles,
-            const std::vector<Body<dim>>            &bodies,
-            const double                             time);
+      explicit ConvectionCorrection(const std::vector<Body<dim>> &bodies);
 
-      /// @p p2g: the P2G vector of the pass (packed with P2GLayout).
       void
-      finish(NodalVector &p2g);
+      before_force_pass(const BackgroundGrid<dim>               &grid,
+                        dealii::Particles::ParticleHandler<dim> &particles,
+                        const std::vector<Body<dim>>            &bodies,
+                        const double                             time) override;
+
+      void
+      after_force_pass(NodalVector &p2g) override;
 
     private:
+      /// Per body: whether it is corrected, and its body force too.
+      std::vector<char> corrected, loads;
+      bool              any = false;
       /// (where, original value) of every shifted stress
       std::vector<std::pair<double *, double>> saved;
       /// A body-force correction to add to a node after the pass.
@@ -95,5 +99,5 @@ namespace mpm
       };
       std::vector<NodalForce> nodal_forces;
     };
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

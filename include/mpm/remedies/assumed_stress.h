@@ -8,7 +8,7 @@
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     /// One particle's part in a cell's stress projection.
     template <int dim>
@@ -244,5 +244,5 @@ namespace mpm
     isotropic_compliance(const double youngs_modulus,
                          const double poissons_ratio,
                          const bool   plane_stress);
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

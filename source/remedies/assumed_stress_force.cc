@@ -1,11 +1,11 @@
-#include <mpm/filters/assumed_stress_force.h>
+#include <mpm/remedies/assumed_stress_force.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     using namespace dealii;
 
@@ -178,5 +178,5 @@ namespace mpm
 
     template class AssumedStressForce<2>;
     template class AssumedStressForce<3>;
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

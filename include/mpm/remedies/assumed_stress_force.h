@@ -3,14 +3,14 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <mpm/filters/assumed_stress.h>
+#include <mpm/remedies/assumed_stress.h>
 #include <mpm/shape_functions/q1_cell.h>
 
 #include <vector>
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     /**
      * The internal force of a cell's assumed-stress field, integrated
@@ -163,5 +163,5 @@ namespace mpm
               }
         }
     }
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

@@ -1,4 +1,4 @@
-#include <mpm/filters/assumed_stress.h>
+#include <mpm/remedies/assumed_stress.h>
 
 #include <algorithm>
 #include <cmath>
@@ -7,25 +7,20 @@
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     using namespace dealii;
 
     namespace
     {
-      /// Voigt order: 2D xx yy xy; 3D xx yy zz yz xz xy.
+      /// Voigt order: 2D xx yy xy; 3D xx yy zz yz xz xy. Row and column
+      /// of each component, 2D first.
+      constexpr unsigned int voigt_rows[2][6] = {{0, 1, 0}, {0, 1, 2, 1, 0, 0}};
+      constexpr unsigned int voigt_cols[2][6] = {{0, 1, 1}, {0, 1, 2, 2, 2, 1}};
       template <int dim>
-      constexpr unsigned int voigt_i[dim == 2 ? 3 : 6] = {};
-      template <>
-      constexpr unsigned int voigt_i<2>[3] = {0, 1, 0};
-      template <>
-      constexpr unsigned int voigt_i<3>[6] = {0, 1, 2, 1, 0, 0};
+      constexpr const unsigned int *voigt_i = voigt_rows[dim == 3];
       template <int dim>
-      constexpr unsigned int voigt_j[dim == 2 ? 3 : 6] = {};
-      template <>
-      constexpr unsigned int voigt_j<2>[3] = {0, 1, 1};
-      template <>
-      constexpr unsigned int voigt_j<3>[6] = {0, 1, 2, 2, 2, 1};
+      constexpr const unsigned int *voigt_j = voigt_cols[dim == 3];
 
       /// Constant-stress columns of the basis (the fallback subspace).
       template <int dim>
@@ -297,5 +292,5 @@ namespace mpm
     isotropic_compliance<2>(double, double, bool);
     template SymmetricTensor<4, 3>
     isotropic_compliance<3>(double, double, bool);
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

@@ -1,6 +1,7 @@
-#include <mpm/filters/convection_correction.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/convection_correction.h>
+#include <mpm/remedies/convection_correction_remedy.h>
 #include <mpm/transfer/particle_to_grid.h>
 
 #include <cmath>
@@ -8,7 +9,7 @@
 
 namespace mpm
 {
-  namespace filters
+  namespace remedies
   {
     using namespace dealii;
 
@@ -73,11 +74,31 @@ namespace mpm
     }
 
     template <int dim>
+    ConvectionCorrection<dim>::ConvectionCorrection(
+      const std::vector<Body<dim>> &bodies)
+      : ForcePassHook<dim>("convection correction")
+      , corrected(bodies.size(), 0)
+      , loads(bodies.size(), 0)
+    {
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (const auto *choice =
+              bodies[b]
+                .prm.locking_remedies
+                .template find<ConvectionCorrectionSettings>())
+          {
+            corrected[b] = 1;
+            loads[b]     = choice->body_force && bodies[b].has_body_force();
+            any          = true;
+          }
+    }
+
+    template <int dim>
     void
-    ConvectionCorrection<dim>::apply(const BackgroundGrid<dim>       &grid,
-                                     Particles::ParticleHandler<dim> &particles,
-                                     const std::vector<Body<dim>>    &bodies,
-                                     const double                     time)
+    ConvectionCorrection<dim>::before_force_pass(
+      const BackgroundGrid<dim>       &grid,
+      Particles::ParticleHandler<dim> &particles,
+      const std::vector<Body<dim>>    &bodies,
+      const double                     time)
     {
       saved.clear();
       nodal_forces.clear();
@@ -88,15 +109,6 @@ namespace mpm
       else
         {
           using L = ParticleLayout<1>;
-          std::vector<char> corrected(bodies.size(), 0), loads(bodies.size());
-          bool              any = false;
-          for (unsigned int b = 0; b < bodies.size(); ++b)
-            {
-              corrected[b] = bodies[b].prm.convection_correction;
-              loads[b] = corrected[b] && bodies[b].prm.convection_body_force &&
-                         bodies[b].has_body_force();
-              any = any || corrected[b];
-            }
           if (!any)
             return;
 
@@ -240,7 +252,7 @@ namespace mpm
 
     template <int dim>
     void
-    ConvectionCorrection<dim>::finish(NodalVector &p2g)
+    ConvectionCorrection<dim>::after_force_pass(NodalVector &p2g)
     {
       for (const auto &[s, value] : saved)
         *s = value;
@@ -256,5 +268,5 @@ namespace mpm
     template class ConvectionCorrection<1>;
     template class ConvectionCorrection<2>;
     template class ConvectionCorrection<3>;
-  } // namespace filters
+  } // namespace remedies
 } // namespace mpm

@@ -1,0 +1,51 @@
+#include <mpm/remedies/registry.h>
+#include <mpm/remedies/volumetric_smoothing_remedy.h>
+
+namespace mpm
+{
+  namespace remedies
+  {
+    namespace
+    {
+      /// `Volumetric smoothing = cell` or `node`: no entries of its own,
+      /// and it works with every material, family and scheme.
+      template <VolumeAverage where>
+      class VolumetricSmoothingRemedy : public Remedy,
+                                        public VolumetricSmoothingSettings
+      {
+      public:
+        VolumetricSmoothingRemedy()
+        {
+          average = where;
+        }
+
+        static void
+        declare_parameters(dealii::ParameterHandler &)
+        {}
+
+        void
+        parse_parameters(dealii::ParameterHandler &) override
+        {}
+
+        void
+        check(const Context &) const override
+        {}
+      };
+
+      using CellSmoothing = VolumetricSmoothingRemedy<VolumeAverage::cell>;
+      using NodeSmoothing = VolumetricSmoothingRemedy<VolumeAverage::node>;
+
+      MPM_REGISTER_REMEDY(CellSmoothing,
+                          "Volumetric smoothing",
+                          "cell",
+                          "cell: over this body's particles in the cell (the "
+                          "seed's theta-bar; F-bar for models that use F)")
+      MPM_REGISTER_REMEDY(NodeSmoothing,
+                          "Volumetric smoothing",
+                          "node",
+                          "node: mass-weighted to the grid nodes and "
+                          "interpolated back (averages of all node-smoothed "
+                          "bodies mix at shared nodes).")
+    } // namespace
+  }   // namespace remedies
+} // namespace mpm
