@@ -3,6 +3,7 @@
 #include <mpm/filters/stress_filter.h>
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/particle_relocation.h>
+#include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
@@ -143,7 +144,8 @@ namespace mpm
       }
     setup_balance[1] = LoadBalancer<dim>::balance(particle_handler, comm);
     stress_filter    = std::make_unique<filters::StressFilter<dim>>(bodies);
-    if (params.shape_functions.family != shape_functions::Family::standard)
+    if (shape_functions::family_traits(params.shape_functions.family)
+          .has_domains)
       domain_functions =
         std::make_unique<shape_functions::DomainShapeFunctions<dim>>(
           background,
@@ -322,10 +324,10 @@ namespace mpm
   void
   Simulator<dim>::check_shape_functions()
   {
-    using shape_functions::Family;
-    const Family family = params.shape_functions.family;
-    layout.has_corners  = family == Family::cpdi2;
-    layout.has_affine   = params.time.apic;
+    const auto &family =
+      shape_functions::family_traits(params.shape_functions.family);
+    layout.has_corners = family.tracks_corners;
+    layout.has_affine  = params.time.apic;
     // Loaded faces: the offset of the face from the particle, so that the
     // traction acts on the face and not a particle half-spacing inside it.
     layout.has_traction_offset =
@@ -334,23 +336,8 @@ namespace mpm
       });
     for (auto &body : bodies)
       body.face_offset_slot = layout.traction_offset();
-    const std::string what =
-      std::string("Shape functions/Family = ") + family_name(family);
-    if (shape_functions::is_gimp(family) && !background.is_cartesian())
-      throw InputError(what +
-                       " needs a grid of axis-parallel boxes, and this grid "
-                       "has distorted cells; use CPDI or CPDI2 there");
-    if (family == Family::standard && params.time.apic)
-      throw InputError(
-        "Time stepping/Velocity transfer = APIC needs a particle-domain "
-        "family (Shape functions/Family = uGIMP, cpGIMP, CPDI or CPDI2): "
-        "with the standard Q1 functions the affine transfer C_p = sum_i "
-        "v_i grad N_ip extrapolates the bilinear mode beyond the cell and "
-        "the step is unstable (doc/theory.md, section 9.8)");
-    if (family != Family::standard && any_convection_correction)
-      throw InputError(what + " cannot be combined with Locking remedies/"
-                              "Stress filter = convection correction, which "
-                              "is derived for standard MPM");
+    family.check(
+      {background.is_cartesian(), params.time.apic, any_convection_correction});
   }
 
   template <int dim>
@@ -666,10 +653,9 @@ namespace mpm
         // domain, so mass and momentum must be mapped with it again, or
         // G2P's weights no longer sum to the nodal masses and momentum is
         // not conserved.
-        using shape_functions::Family;
         const bool new_domains =
-          domain_functions && (domain_functions->family() == Family::cpgimp ||
-                               domain_functions->family() == Family::cpdi);
+          shape_functions::family_traits(params.shape_functions.family)
+            .domain_follows_deformation;
         if (new_domains)
           domain_functions->forget_stencils();
         particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
@@ -712,21 +698,25 @@ namespace mpm
                                     current_time);
       }
     {
-      TimerOutput::Scope t(timer, "P2G");
-      const auto         e = transfer::particle_to_grid(background,
-                                                particle_handler,
-                                                bodies,
-                                                current_time,
-                                                content,
-                                                p2g,
-                                                stress_filter.get(),
-                                                domain_functions.get(),
-                                                layout.affine());
+      TimerOutput::Scope              t(timer, "P2G");
+      const transfer::P2GContext<dim> context{
+        transfer_context(), bodies, *stress_filter, current_time, content, p2g};
+      const auto e = transfer::particle_to_grid(context);
       if (local_error.empty())
         local_error = e;
     }
     if (correct)
       convection_correction.finish(p2g);
+  }
+
+  template <int dim>
+  transfer::TransferContext<dim>
+  Simulator<dim>::transfer_context()
+  {
+    return {background,
+            particle_handler,
+            domain_functions.get(),
+            layout.affine()};
   }
 
   template <int dim>
@@ -748,22 +738,12 @@ namespace mpm
     // MUSL's re-map is fused into G2P (one pass over the particles).
     const bool fused_remap =
       params.time.scheme == Parameters::TimeStepping::Scheme::musl;
-    const auto e =
-      domain_functions ?
-        transfer::grid_to_particle_domains(background,
-                                           particle_handler,
-                                           kinematics,
-                                           dt,
-                                           params.time.flip_fraction,
-                                           *domain_functions,
-                                           fused_remap ? &remap : nullptr,
-                                           layout.affine()) :
-        transfer::grid_to_particle(background,
-                                   particle_handler,
-                                   kinematics,
-                                   dt,
-                                   params.time.flip_fraction,
-                                   fused_remap ? &remap : nullptr);
+    const auto e = transfer::grid_to_particle(
+      transfer::G2PContext<dim>{transfer_context(),
+                                kinematics,
+                                dt,
+                                params.time.flip_fraction,
+                                fused_remap ? &remap : nullptr});
     if (local_error.empty())
       local_error = e;
   }
@@ -812,8 +792,8 @@ namespace mpm
   Simulator<dim>::update_positions()
   {
     TimerOutput::Scope t(timer, "position update");
-    if (domain_functions &&
-        domain_functions->family() == shape_functions::Family::cpdi2)
+    if (shape_functions::family_traits(params.shape_functions.family)
+          .tracks_corners)
       {
         const auto e = transfer::move_domain_corners(
           background, particle_handler, kinematics, last_dt, *domain_functions);

@@ -156,6 +156,9 @@ namespace mpm
     update_grid(const double dt);
     void
     grid_to_particle(const double dt);
+    /// Particles, grid and shape functions, for the transfers.
+    transfer::TransferContext<dim>
+    transfer_context();
     void
     remap_momentum();
     void
