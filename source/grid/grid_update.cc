@@ -1,7 +1,6 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm/grid/grid_update.h>
-#include <mpm/transfer/particle_to_grid.h>
 
 #include <cmath>
 #include <sstream>
@@ -34,7 +33,7 @@ namespace mpm
               const double               min_mass,
               NodalVector               &kinematics)
   {
-    using P           = transfer::P2GLayout<dim>;
+    using P           = P2GLayout<dim>;
     using K           = KinematicsLayout<dim>;
     const double *in  = p2g.begin();
     double       *out = kinematics.begin();
@@ -82,7 +81,7 @@ namespace mpm
                  const double               min_mass,
                  NodalVector               &kinematics)
   {
-    using P = transfer::P2GLayout<dim>;
+    using P = P2GLayout<dim>;
     using K = KinematicsLayout<dim>;
     std::string error;
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)

@@ -1,6 +1,7 @@
 #include <mpm/grid/grid_update.h>
 #include <mpm/integrators/explicit_integrator.h>
 #include <mpm/particles/particle_relocation.h>
+#include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
 #include <mpm/utilities/input_error.h>
@@ -80,11 +81,7 @@ namespace mpm
         // domain, so mass and momentum must be mapped with it again, or
         // G2P's weights no longer sum to the nodal masses and momentum is
         // not conserved.
-        using shape_functions::Family;
-        const bool new_domains =
-          state.domain_functions &&
-          (state.domain_functions->family() == Family::cpgimp ||
-           state.domain_functions->family() == Family::cpdi);
+        const bool new_domains = family().domain_follows_deformation;
         if (new_domains)
           state.domain_functions->forget_stencils();
         particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
@@ -131,17 +128,14 @@ namespace mpm
                                   state.current_time);
         }
     {
-      TimerOutput::Scope t(state.timer, "P2G");
-      state.local_error.record(
-        transfer::particle_to_grid(state.background,
-                                   state.particle_handler,
-                                   state.bodies,
-                                   state.current_time,
-                                   content,
-                                   state.p2g,
-                                   state.stress_filter.get(),
-                                   state.domain_functions.get(),
-                                   state.layout.affine()));
+      TimerOutput::Scope              t(state.timer, "P2G");
+      const transfer::P2GContext<dim> context{transfer_context(),
+                                              state.bodies,
+                                              *state.stress_filter,
+                                              state.current_time,
+                                              content,
+                                              state.p2g};
+      state.local_error.record(transfer::particle_to_grid(context));
     }
     if (force_pass)
       for (const auto &hook : state.force_pass_hooks)
@@ -184,24 +178,12 @@ namespace mpm
     // MUSL's re-map is fused into G2P (one pass over the particles).
     const bool fused_remap =
       state.params.time.scheme == Parameters::TimeStepping::Scheme::musl;
-    NodalVector *remap = fused_remap ? &state.remap : nullptr;
-    const double flip  = state.params.time.flip_fraction;
-    state.local_error.record(
-      state.domain_functions ?
-        transfer::grid_to_particle_domains(state.background,
-                                           state.particle_handler,
-                                           state.kinematics,
-                                           dt,
-                                           flip,
-                                           *state.domain_functions,
-                                           remap,
-                                           state.layout.affine()) :
-        transfer::grid_to_particle(state.background,
-                                   state.particle_handler,
-                                   state.kinematics,
-                                   dt,
-                                   flip,
-                                   remap));
+    state.local_error.record(transfer::grid_to_particle(
+      transfer::G2PContext<dim>{transfer_context(),
+                                state.kinematics,
+                                dt,
+                                state.params.time.flip_fraction,
+                                fused_remap ? &state.remap : nullptr}));
   }
 
   template <int dim>
@@ -240,8 +222,7 @@ namespace mpm
   ExplicitIntegrator<dim>::update_positions()
   {
     TimerOutput::Scope t(state.timer, "position update");
-    if (state.domain_functions &&
-        state.domain_functions->family() == shape_functions::Family::cpdi2)
+    if (family().tracks_corners)
       state.local_error.record(
         transfer::move_domain_corners(state.background,
                                       state.particle_handler,
@@ -262,6 +243,23 @@ namespace mpm
         state.lost_messages.front() +
         " (set Boundary conditions/Particles leaving the grid = "
         "remove to delete such particles instead)");
+  }
+
+  template <int dim>
+  transfer::TransferContext<dim>
+  ExplicitIntegrator<dim>::transfer_context() const
+  {
+    return {state.background,
+            state.particle_handler,
+            state.domain_functions.get(),
+            state.layout.affine()};
+  }
+
+  template <int dim>
+  const shape_functions::FamilyTraits &
+  ExplicitIntegrator<dim>::family() const
+  {
+    return shape_functions::family_traits(state.params.shape_functions.family);
   }
 
   template class ExplicitIntegrator<1>;

@@ -119,16 +119,10 @@ namespace mpm
     ShapeFunctions::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Shape functions");
-      prm.declare_entry(
-        "Family",
-        "standard",
-        Patterns::Selection(shape_functions::family_pattern()),
-        "standard: Q1 at the particle; uGIMP: average over a box domain of "
-        "fixed size (axis-parallel grids only); cpGIMP: the box follows the "
-        "stretch of the particle; CPDI: average over the parallelogram "
-        "(parallelepiped) F r_i; CPDI2: over the quadrilateral (hexahedron) "
-        "of corners moved with the grid velocity. Domains come from the "
-        "body mesh (doc/theory.md, section 9).");
+      prm.declare_entry("Family",
+                        "standard",
+                        Patterns::Selection(shape_functions::family_pattern()),
+                        shape_functions::family_documentation());
       prm.declare_entry(
         "Domain outside the grid",
         "error",

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/numbers.h>
@@ -128,9 +129,9 @@ namespace mpm
   void
   Simulator<dim>::check_shape_functions()
   {
-    using shape_functions::Family;
-    const Family family      = params.shape_functions.family;
-    state.layout.has_corners = family == Family::cpdi2;
+    const auto &family =
+      shape_functions::family_traits(params.shape_functions.family);
+    state.layout.has_corners = family.tracks_corners;
     state.layout.has_affine  = params.time.apic;
     // Loaded faces: the offset of the face from the particle, so that the
     // traction acts on the face and not a particle half-spacing inside it.
@@ -142,19 +143,7 @@ namespace mpm
                   });
     for (auto &body : state.bodies)
       body.face_offset_slot = state.layout.traction_offset();
-    const std::string what =
-      std::string("Shape functions/Family = ") + family_name(family);
-    if (shape_functions::is_gimp(family) && !state.background.is_cartesian())
-      throw InputError(what +
-                       " needs a grid of axis-parallel boxes, and this grid "
-                       "has distorted cells; use CPDI or CPDI2 there");
-    if (family == Family::standard && params.time.apic)
-      throw InputError(
-        "Time stepping/Velocity transfer = APIC needs a particle-domain "
-        "family (Shape functions/Family = uGIMP, cpGIMP, CPDI or CPDI2): "
-        "with the standard Q1 functions the affine transfer C_p = sum_i "
-        "v_i grad N_ip extrapolates the bilinear mode beyond the cell and "
-        "the step is unstable (doc/theory.md, section 9.8)");
+    family.check({state.background.is_cartesian(), params.time.apic});
   }
 
   template <int dim>

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/utilities/input_error.h>
@@ -70,7 +71,8 @@ namespace mpm
     state.stress_filter =
       std::make_unique<remedies::StressFilter<dim>>(state.bodies);
     state.force_pass_hooks = remedies::create_force_pass_hooks(state.bodies);
-    if (params.shape_functions.family != shape_functions::Family::standard)
+    if (shape_functions::family_traits(params.shape_functions.family)
+          .has_domains)
       state.domain_functions =
         std::make_unique<shape_functions::DomainShapeFunctions<dim>>(
           state.background,

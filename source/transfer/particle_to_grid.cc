@@ -1,13 +1,14 @@
-#include <mpm/remedies/assumed_stress.h>
-#include <mpm/remedies/assumed_stress_force.h>
-#include <mpm/remedies/stress_filter.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
-#include <mpm/shape_functions/domain_shape_functions.h>
+#include <mpm/remedies/stress_filter.h>
+#include <mpm/shape_functions/family_registry.h>
+#include <mpm/transfer/integrated_field_force.h>
+#include <mpm/transfer/nodal_sum.h>
+#include <mpm/transfer/own_stress.h>
 #include <mpm/transfer/particle_to_grid.h>
+#include <mpm/transfer/projected_stress_force.h>
+#include <mpm/transfer/velocity_gradient.h>
 
-#include <algorithm>
-#include <memory>
 #include <type_traits>
 
 namespace mpm
@@ -18,16 +19,163 @@ namespace mpm
 
     namespace
     {
-      /// Half-vectors of the current particle domain, F r_i (columns).
-      template <int dim>
-      inline Tensor<2, dim>
-      current_domain(const double *prop)
+      /**
+       * The P2G pass of family @p Family with the stresses of @p Stresses
+       * (OwnStress, or the family's filtered force): per cell, the
+       * family's weights of each particle, summed into the nodes as the
+       * family asks (NodalSum). Compiled per family: no family branch in
+       * the loop.
+       */
+      template <typename Family, int dim, typename Stresses>
+      std::string
+      p2g_pass(const P2GContext<dim> &c, Stresses &stresses)
       {
-        using L = ParticleLayout<dim>;
-        return load_matrix<dim>(prop + L::F) *
-               load_matrix<dim>(prop + L::domain);
+        using L       = ParticleLayout<dim>;
+        using P       = P2GLayout<dim>;
+        using Weights = typename Family::template Weights<dim>;
+        using Sum     = NodalSum<Family, dim, P::n_components>;
+        const P2GPass<dim> pass(c.content);
+        const bool         do_mass     = pass.mass;
+        const bool         do_momentum = pass.momentum;
+        const bool         do_force    = pass.force;
+        // the components of the node's values this pass adds
+        const unsigned int first = do_mass ? P::mass : P::force;
+        const unsigned int last  = do_force ? P::n_components : P::force;
+
+        std::vector<char> body_loaded(c.bodies.size());
+        for (unsigned int b = 0; b < c.bodies.size(); ++b)
+          body_loaded[b] = c.bodies[b].has_body_force();
+
+        // The USF force pass adds to the mass and momentum of the first
+        // pass (whose ghost entries compress() has already zeroed).
+        if (c.content != P2GContent::force)
+          c.nodal = 0.;
+        double *const out = c.nodal.begin();
+        std::string   error;
+        Weights       weights(c.grid, c.domains);
+
+        weights.begin_pass(c.particles.n_locally_owned_particles());
+        for_each_cell_with_particles(
+          c.grid, c.particles, [&](const auto &cell, const auto &pic) {
+            stresses.begin_cell(cell, pic);
+            weights.begin_cell(cell);
+            Sum sum(out, P::n_components);
+            for (const auto &p : pic)
+              {
+                const double *prop = p.get_properties().data();
+                if (!weights.evaluate(p, do_force, error))
+                  continue;
+                const double   m = prop[L::mass];
+                Tensor<2, dim> sigma; // -V_p sigma_p
+                double         ext[dim] = {}, traction[dim];
+                Tensor<1, dim> d_face;
+                bool           loaded_face = false;
+                if (do_force)
+                  {
+                    const unsigned int b =
+                      static_cast<unsigned int>(prop[L::body]);
+                    const Body<dim> &body = c.bodies[b];
+                    sigma = stresses.weighted_stress(p, prop, b);
+                    body.body_force_on(p.get_location(),
+                                       prop + L::X,
+                                       m,
+                                       c.time,
+                                       body_loaded[b],
+                                       ext);
+                    loaded_face = body.has_traction() &&
+                                  body.traction_force_on(p.get_location(),
+                                                         prop,
+                                                         c.time,
+                                                         traction,
+                                                         d_face);
+                  }
+                // APIC: the affine velocity C_p, about the domain's
+                // centroid sum_i S_ip x_i, so that sum_i S_ip C (x_i -
+                // x_c) = 0 and momentum is kept (CPDI2's centroid is not
+                // its particle position)
+                Tensor<2, dim> C;
+                Point<dim>     x_c;
+                if constexpr (Family::allows_apic)
+                  if (c.affine && do_momentum)
+                    {
+                      C   = load_matrix<dim>(prop + c.affine);
+                      x_c = stencil_centroid(weights.stencil(), c.grid);
+                    }
+                for (unsigned int k = 0; k < weights.size(); ++k)
+                  {
+                    double      *node = sum.slot(weights, k);
+                    const double S    = weights.value(k);
+                    if (do_mass)
+                      node[P::mass] += S * m;
+                    if (do_momentum)
+                      {
+                        Tensor<1, dim> v;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          v[d] = prop[L::velocity + d];
+                        if constexpr (Family::allows_apic)
+                          if (c.affine)
+                            v +=
+                              C * (c.grid.node_position(weights.node(k)) - x_c);
+                        for (unsigned int d = 0; d < dim; ++d)
+                          node[P::momentum + d] += S * m * v[d];
+                      }
+                    if (do_force)
+                      {
+                        const Tensor<1, dim> f = sigma * weights.gradient(k);
+                        for (unsigned int d = 0; d < dim; ++d)
+                          node[P::force + d] += f[d] + S * ext[d];
+                      }
+                  }
+                // The traction acts on the loaded face at x_p + d_face.
+                if (loaded_face)
+                  {
+                    double S_face[Weights::n_entries];
+                    weights.face_values(d_face, S_face);
+                    for (unsigned int k = 0; k < weights.size(); ++k)
+                      {
+                        double *node = sum.slot(weights, k);
+                        for (unsigned int d = 0; d < dim; ++d)
+                          node[P::force + d] += S_face[k] * traction[d];
+                      }
+                  }
+              }
+            stresses.finish_cell(cell, pic, sum, weights);
+            sum.finish(weights, first, last);
+          });
+        weights.end_pass(error.empty());
+        c.nodal.compress(VectorOperation::add);
+        return error;
       }
+
+      /// The family's way of including the assumed-stress filter.
+      template <typename Family, int dim>
+      using FilteredStresses =
+        std::conditional_t<Family::template Weights<dim>::filtered_force ==
+                             shape_functions::FilteredForce::integrated_field,
+                           IntegratedFieldForce<dim>,
+                           ProjectedStressForce<dim>>;
     } // namespace
+
+    template <int dim>
+    std::string
+    particle_to_grid(const P2GContext<dim> &c)
+    {
+      // no filter in 1D; a pass without forces needs no stresses
+      const bool filtering =
+        dim > 1 && c.content != P2GContent::mass_momentum && c.filter.any();
+      return shape_functions::with_family(
+        shape_functions::family_of(c.domains), [&](const auto f) {
+          using Family = decltype(f);
+          if constexpr (dim > 1)
+            if (filtering)
+              {
+                FilteredStresses<Family, dim> stresses(c);
+                return p2g_pass<Family>(c, stresses);
+              }
+          OwnStress<dim> stresses;
+          return p2g_pass<Family>(c, stresses);
+        });
+    }
 
     template <int dim>
     std::string
@@ -37,271 +185,37 @@ namespace mpm
                      const double                     time,
                      const P2GContent                 content,
                      NodalVector                     &nodal,
-                     remedies::StressFilter<dim>      *filter,
+                     remedies::StressFilter<dim>     *filter,
                      const shape_functions::DomainShapeFunctions<dim> *domains,
                      const unsigned int                                affine)
     {
-      if (domains)
-        return particle_to_grid_domains(grid,
-                                        particles,
-                                        bodies,
-                                        time,
-                                        content,
-                                        nodal,
-                                        filter,
-                                        *domains,
-                                        affine);
-      // APIC needs a domain family (refused at set-up otherwise)
-      Assert(affine == 0, ExcInternalError());
-      using L                   = ParticleLayout<dim>;
-      constexpr unsigned int nv = shape_functions::n_q1<dim>;
-      const P2GPass<dim>     pass(content);
-      const unsigned int     nc          = pass.n_components;
-      const unsigned int     off_m       = 0;
-      const unsigned int     off_p       = pass.momentum_offset;
-      const unsigned int     off_f       = pass.force_offset;
-      const bool             do_mass     = pass.mass;
-      const bool             do_momentum = pass.momentum;
-      const bool             do_force    = pass.force;
-
-      std::vector<char> body_loaded(bodies.size());
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        body_loaded[b] = bodies[b].has_body_force();
-
-      // The USF force pass adds to the mass and momentum of the first pass
-      // (whose ghost entries compress() has already zeroed).
-      if (content != P2GContent::force)
-        nodal = 0.;
-      double *const out = nodal.begin();
-
-      // Filtered bodies: the force of their cell's assumed-stress field,
-      // integrated over the particle domains (AssumedStressForce).
-      constexpr bool has_filter = dim > 1;
-      constexpr int  fdim       = dim == 1 ? 2 : dim; // no filter in 1D
-      using Force               = remedies::AssumedStressForce<fdim>;
-      const bool filtering = has_filter && do_force && filter && filter->any();
-      std::vector<Force>        field_force(filtering ? bodies.size() : 0);
-      std::vector<unsigned int> force_bodies;
-      std::vector<unsigned int> cell_count(filtering ? bodies.size() : 0);
-      std::vector<double>       cell_volume(filtering ? bodies.size() : 0);
-      std::vector<char> domain_integration(filtering ? bodies.size() : 0);
-      Tensor<2, dim>    J0_inverse;
-      Point<dim>        centre;
-      for (unsigned int d = 0; d < dim; ++d)
-        centre[d] = 0.5;
-
-      double         N[nv];
-      Tensor<1, dim> G[nv];
-      // The cell body, compiled twice: without the filter it is the plain
-      // particle sum (no filter branches in the hot loop).
-      auto cell_body = [&](const auto  filtering_tag,
-                           const auto &cell,
-                           const auto &pic) {
-        constexpr bool      with_filter = decltype(filtering_tag)::value;
-        const auto         &geo         = grid.geometry(cell);
-        const unsigned int *nodes       = grid.nodes(cell);
-        Tensor<2, dim>      J0; // filtering: the Jacobian at the centre
-        if constexpr (has_filter && with_filter)
-          {
-            J0         = geo.jacobian(centre);
-            J0_inverse = invert(J0);
-            // Which filtered bodies fill this cell (AssumedStressForce::
-            // fills): count and volume first, while the particles come
-            // into cache.
-            std::fill(cell_count.begin(), cell_count.end(), 0u);
-            std::fill(cell_volume.begin(), cell_volume.end(), 0.);
-            for (const auto &p : pic)
-              {
-                const double      *prop = p.get_properties().data();
-                const unsigned int b = static_cast<unsigned int>(prop[L::body]);
-                ++cell_count[b];
-                cell_volume[b] += prop[L::volume];
-              }
-            const double volume_of_cell = std::abs(determinant(J0));
-            for (unsigned int b = 0; b < bodies.size(); ++b)
-              domain_integration[b] =
-                Force::fills(cell_count[b], cell_volume[b], volume_of_cell);
-            filter->begin_cell(J0);
-          }
-
-        // Accumulate per cell, then scatter once.
-        double local[nv][1 + 2 * dim] = {};
-        for (const auto &p : pic)
-          {
-            const Point<dim> xi   = p.get_reference_location();
-            const double    *prop = p.get_properties().data();
-            const double     m    = prop[L::mass];
-            if (do_force)
-              geo.values_and_gradients(xi, N, G);
-            else
-              geo.values(xi, N);
-
-            if (do_force)
-              {
-                const unsigned int b = static_cast<unsigned int>(prop[L::body]);
-                const double       V = prop[L::volume];
-
-                // Stress: the particle's own (midpoint rule), or its
-                // share of the cell's filtered field.
-                bool by_field = false;
-                if constexpr (has_filter && with_filter)
-                  if (filter->filtered(b))
-                    {
-                      if (field_force[b].empty())
-                        force_bodies.push_back(b);
-                      field_force[b].add_particle(
-                        xi,
-                        domain_integration[b] ?
-                          Tensor<2, dim>(J0_inverse *
-                                         current_domain<dim>(prop)) :
-                          Tensor<2, dim>(),
-                        V);
-                      filter->add_particle(b, xi, prop);
-                      by_field = true;
-                    }
-                Tensor<2, dim> sigma;
-                if (!by_field)
-                  sigma = -V * in_plane_stress<dim>(prop + L::stress);
-
-                double ext[dim], traction[dim];
-                bodies[b].body_force_on(
-                  p.get_location(), prop + L::X, m, time, body_loaded[b], ext);
-                for (unsigned int v = 0; v < nv; ++v)
-                  {
-                    const Tensor<1, dim> f = sigma * G[v];
-                    for (unsigned int d = 0; d < dim; ++d)
-                      local[v][1 + dim + d] += f[d] + N[v] * ext[d];
-                  }
-                // The traction acts on the loaded face at x_p + d_face;
-                // a face that has left the particle's cell acts at the
-                // nearest point of the cell, the last one whose nodes the
-                // body reaches.
-                Tensor<1, dim> d_face;
-                if (bodies[b].has_traction() &&
-                    bodies[b].traction_force_on(
-                      p.get_location(), prop, time, traction, d_face))
-                  {
-                    Point<dim> xi_face =
-                      xi + Point<dim>(invert(geo.jacobian(xi)) * d_face);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      xi_face[d] = std::clamp(xi_face[d], 0., 1.);
-                    double N_face[nv];
-                    geo.values(xi_face, N_face);
-                    for (unsigned int v = 0; v < nv; ++v)
-                      for (unsigned int d = 0; d < dim; ++d)
-                        local[v][1 + dim + d] += N_face[v] * traction[d];
-                  }
-              }
-            if (do_momentum)
-              for (unsigned int v = 0; v < nv; ++v)
-                {
-                  const double w = N[v] * m;
-                  local[v][0] += w;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    local[v][1 + d] += w * prop[L::velocity + d];
-                }
-          }
-
-        // Filtered bodies: solve their projections in this cell (which
-        // writes the projected stresses back), then the force of the
-        // projected field.
-        if constexpr (has_filter && with_filter)
-          for (const unsigned int b : force_bodies)
-            {
-              double
-                beta[remedies::AssumedStressProjection<3>::n_beta]; // the
-                                                                   // largest
-              double     f[nv * dim] = {};
-              const auto result      = filter->finish_cell(pic, b, beta);
-              if (result != remedies::StressFilter<dim>::Result::unchanged)
-                field_force[b].add_internal_force(geo,
-                                                  filter->projection(b),
-                                                  beta,
-                                                  filter->cartesian_field(b),
-                                                  f);
-              else
-                // nothing to project onto: the particles' own stresses
-                for (const auto &p : pic)
-                  {
-                    const double *prop = p.get_properties().data();
-                    if (static_cast<unsigned int>(prop[L::body]) != b)
-                      continue;
-                    geo.values_and_gradients(p.get_reference_location(), N, G);
-                    const Tensor<2, dim> sigma =
-                      -prop[L::volume] * in_plane_stress<dim>(prop + L::stress);
-                    for (unsigned int v = 0; v < nv; ++v)
-                      {
-                        const Tensor<1, dim> fv = sigma * G[v];
-                        for (unsigned int d = 0; d < dim; ++d)
-                          f[v * dim + d] += fv[d];
-                      }
-                  }
-              for (unsigned int v = 0; v < nv; ++v)
-                for (unsigned int d = 0; d < dim; ++d)
-                  local[v][1 + dim + d] += f[v * dim + d];
-              field_force[b].clear();
-            }
-        if constexpr (with_filter)
-          force_bodies.clear();
-
-        for (unsigned int v = 0; v < nv; ++v)
-          {
-            double *node = out + nodes[v] * nc;
-            if (do_mass)
-              node[off_m] += local[v][0];
-            if (do_momentum)
-              for (unsigned int d = 0; d < dim; ++d)
-                node[off_p + d] += local[v][1 + d];
-            if (do_force)
-              for (unsigned int d = 0; d < dim; ++d)
-                node[off_f + d] += local[v][1 + dim + d];
-          }
-      };
-      if (filtering)
-        for_each_cell_with_particles(grid,
-                                     particles,
-                                     [&](const auto &cell, const auto &pic) {
-                                       cell_body(std::true_type(), cell, pic);
-                                     });
-      else
-        for_each_cell_with_particles(grid,
-                                     particles,
-                                     [&](const auto &cell, const auto &pic) {
-                                       cell_body(std::false_type(), cell, pic);
-                                     });
-      nodal.compress(VectorOperation::add);
-      return {};
+      // of no body: filters nothing
+      static const std::vector<Body<dim>> no_bodies;
+      remedies::StressFilter<dim>         no_filter(no_bodies);
+      return particle_to_grid(
+        P2GContext<dim>{{grid, particles, domains, affine},
+                        bodies,
+                        filter ? *filter : no_filter,
+                        time,
+                        content,
+                        nodal});
     }
 
-    template std::string
-    particle_to_grid<1>(const BackgroundGrid<1> &,
-                        Particles::ParticleHandler<1> &,
-                        const std::vector<Body<1>> &,
-                        double,
-                        P2GContent,
-                        NodalVector &,
-                        remedies::StressFilter<1> *,
-                        const shape_functions::DomainShapeFunctions<1> *,
-                        unsigned int);
-    template std::string
-    particle_to_grid<2>(const BackgroundGrid<2> &,
-                        Particles::ParticleHandler<2> &,
-                        const std::vector<Body<2>> &,
-                        double,
-                        P2GContent,
-                        NodalVector &,
-                        remedies::StressFilter<2> *,
-                        const shape_functions::DomainShapeFunctions<2> *,
-                        unsigned int);
-    template std::string
-    particle_to_grid<3>(const BackgroundGrid<3> &,
-                        Particles::ParticleHandler<3> &,
-                        const std::vector<Body<3>> &,
-                        double,
-                        P2GContent,
-                        NodalVector &,
-                        remedies::StressFilter<3> *,
-                        const shape_functions::DomainShapeFunctions<3> *,
-                        unsigned int);
+#define MPM_INSTANTIATE(d)                                         \
+  template std::string particle_to_grid<d>(const P2GContext<d> &); \
+  template std::string particle_to_grid<d>(                        \
+    const BackgroundGrid<d> &,                                     \
+    Particles::ParticleHandler<d> &,                               \
+    const std::vector<Body<d>> &,                                  \
+    double,                                                        \
+    P2GContent,                                                    \
+    NodalVector &,                                                 \
+    remedies::StressFilter<d> *,                                   \
+    const shape_functions::DomainShapeFunctions<d> *,              \
+    unsigned int);
+    MPM_INSTANTIATE(1)
+    MPM_INSTANTIATE(2)
+    MPM_INSTANTIATE(3)
+#undef MPM_INSTANTIATE
   } // namespace transfer
 } // namespace mpm

@@ -1,21 +1,12 @@
 #pragma once
 
 #include <mpm/grid/background_grid.h>
+#include <mpm/grid/nodal_layout.h>
 
 #include <string>
 
 namespace mpm
 {
-  /// Components per node of the kinematics vector: velocity at the end of
-  /// the step, and its increment over the step (for FLIP).
-  template <int dim>
-  struct KinematicsLayout
-  {
-    static constexpr unsigned int velocity     = 0;
-    static constexpr unsigned int increment    = dim;
-    static constexpr unsigned int n_components = 2 * dim;
-  };
-
   /**
    * Explicit update of the nodal momentum on owned nodes,
    *   (mv)_i^{n+1} = (mv)_i^n + dt (f_i - c (mv)_i),

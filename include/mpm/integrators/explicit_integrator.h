@@ -1,6 +1,7 @@
 #pragma once
 
 #include <mpm/integrators/time_integrator.h>
+#include <mpm/shape_functions/family_traits.h>
 #include <mpm/transfer/particle_to_grid.h>
 
 namespace mpm
@@ -61,5 +62,12 @@ namespace mpm
     update_stress(const double dt);
     void
     update_positions();
+
+    /// Where the transfers find the particles, grid and family weights.
+    transfer::TransferContext<dim>
+    transfer_context() const;
+    /// The shape-function family's behaviour.
+    const shape_functions::FamilyTraits &
+    family() const;
   };
 } // namespace mpm

@@ -5,6 +5,7 @@
 #include <mpm/grid/background_grid.h>
 #include <mpm/shape_functions/cpdi.h>
 #include <mpm/shape_functions/family.h>
+#include <mpm/shape_functions/stencil.h>
 #include <mpm/shape_functions/stencil_cache.h>
 
 #include <string>
@@ -193,5 +194,13 @@ namespace mpm
       /// This step's stencils: a memo, filled by whichever pass comes first.
       mutable StencilCache<dim> cache;
     };
+
+    /// The family whose weights @p domains gives (null: standard MPM).
+    template <int dim>
+    inline Family
+    family_of(const DomainShapeFunctions<dim> *domains)
+    {
+      return domains ? domains->family() : Family::standard;
+    }
   } // namespace shape_functions
 } // namespace mpm

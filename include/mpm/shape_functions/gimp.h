@@ -3,8 +3,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <mpm/shape_functions/family.h>
 #include <mpm/shape_functions/q1_cell.h>
+#include <mpm/shape_functions/stencil.h>
 
 #include <algorithm>
 

@@ -3,7 +3,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/property_pool.h> // types::particle_index
 
-#include <mpm/shape_functions/family.h>
+#include <mpm/shape_functions/stencil.h>
 
 #include <limits>
 #include <vector>

@@ -3,17 +3,13 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/grid/background_grid.h>
+#include <mpm/grid/nodal_layout.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/transfer/transfer_context.h>
 
 #include <cmath>
 #include <sstream>
 #include <string>
-
-namespace mpm::shape_functions
-{
-  template <int dim>
-  class DomainShapeFunctions;
-}
 
 namespace mpm
 {
@@ -57,52 +53,43 @@ namespace mpm
       p.set_location(x);
     }
 
+    /// What a G2P pass works on, besides the particles and the grid.
+    template <int dim>
+    struct G2PContext : TransferContext<dim>
+    {
+      /// The nodal velocities and increments (KinematicsLayout).
+      const NodalVector &kinematics;
+      double             dt;
+      double             flip_fraction;
+      /// MUSL: the vector (dim components per node) that receives the
+      /// particles' new momenta; null: no re-map in this pass.
+      NodalVector *remap;
+    };
+
     /**
      * Grid to particle: with v_i the nodal velocity at the end of the step
      * and dv_i its increment (KinematicsLayout),
      *   v_p <- a (v_p + sum_i N_ip dv_i) + (1 - a) sum_i N_ip v_i,
      *   x_p <- x_p + dt sum_i N_ip v_i,
-     * with a the FLIP fraction. Particles keep their cell and reference
-     * location until they are sorted again. Returns an empty string or a
-     * description of the first particle with a non-finite value.
+     * with a the FLIP fraction and N_ip the family's weights. Particles
+     * keep their cell and reference location until they are sorted again.
+     * Returns an empty string or a description of the first particle with
+     * a non-finite value (or a bad domain). Compiled per registered family,
+     * chosen once per call.
      *
-     * With @p remap (MUSL), each particle's new momentum m_p v_p goes back
-     * to the nodes in the same pass, with the same N_ip (dim components
-     * per node, compressed at the end): one walk through the particle data
-     * instead of two, the data being what bounds these loops.
+     * APIC (affine != 0, particle-domain families) sets
+     * v_p <- sum_i S_ip v_i and C_p <- sum_i v_i (x) grad S_ip (the flip
+     * fraction is not used).
      *
-     * Standard MPM; the particle-domain families use
-     * grid_to_particle_domains().
+     * With a re-map vector (MUSL), each particle's new momentum m_p v_p
+     * goes back to the nodes in the same pass, with the same weights
+     * (compressed at the end): one walk through the particle data instead
+     * of two, the data being what bounds these loops, and the domain
+     * families' stencils are not evaluated again.
      */
     template <int dim>
     std::string
-    grid_to_particle(const BackgroundGrid<dim>               &grid,
-                     dealii::Particles::ParticleHandler<dim> &particles,
-                     const NodalVector                       &kinematics,
-                     const double                             dt,
-                     const double                             flip_fraction,
-                     NodalVector                             *remap = nullptr);
-
-    /**
-     * G2P of the particle-domain families. @p affine: APIC's slot of C_p
-     * (0: no APIC); APIC sets v_p <- sum_i S_ip v_i and
-     * C_p <- sum_i v_i (x) grad S_ip (the flip fraction is not used).
-     * With @p remap (MUSL), each particle's new momentum goes back to the
-     * nodes in the same pass (dim components per node, compressed at the
-     * end): the re-map reuses the stencil instead of evaluating the domain
-     * again.
-     */
-    template <int dim>
-    std::string
-    grid_to_particle_domains(
-      const BackgroundGrid<dim>                        &grid,
-      dealii::Particles::ParticleHandler<dim>          &particles,
-      const NodalVector                                &kinematics,
-      const double                                      dt,
-      const double                                      flip_fraction,
-      const shape_functions::DomainShapeFunctions<dim> &domains,
-      NodalVector                                      *remap  = nullptr,
-      const unsigned int                                affine = 0);
+    grid_to_particle(const G2PContext<dim> &context);
 
     /**
      * CPDI2's domain update, with the position update at the end of the

@@ -3,7 +3,9 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/grid/background_grid.h>
+#include <mpm/grid/nodal_layout.h>
 #include <mpm/particles/body.h>
+#include <mpm/transfer/transfer_context.h>
 
 #include <vector>
 
@@ -11,11 +13,6 @@ namespace mpm::remedies
 {
   template <int dim>
   class StressFilter;
-}
-namespace mpm::shape_functions
-{
-  template <int dim>
-  class DomainShapeFunctions;
 }
 
 namespace mpm
@@ -30,16 +27,9 @@ namespace mpm
       force                ///< USF, second pass (after the stress update)
     };
 
-    /// Components per node of the P2G vector: mass, momentum (dim),
-    /// force (dim). Offsets of each part.
+    /// The P2G vector's layout (grid/nodal_layout.h).
     template <int dim>
-    struct P2GLayout
-    {
-      static constexpr unsigned int mass         = 0;
-      static constexpr unsigned int momentum     = 1;
-      static constexpr unsigned int force        = 1 + dim;
-      static constexpr unsigned int n_components = 1 + 2 * dim;
-    };
+    using P2GLayout = mpm::P2GLayout<dim>;
 
     /// What a pass of the given content adds, and where in the node's
     /// values (P2GLayout).
@@ -57,29 +47,46 @@ namespace mpm
       static constexpr unsigned int force_offset    = P2GLayout<dim>::force;
     };
 
+    /// What a P2G pass works on, besides the particles and the grid.
+    template <int dim>
+    struct P2GContext : TransferContext<dim>
+    {
+      const std::vector<Body<dim>> &bodies;
+      /// Projects the filtered bodies' stresses (none if !filter.any()).
+      remedies::StressFilter<dim> &filter;
+      double                       time;
+      P2GContent                   content;
+      /// The ghosted P2G vector (P2GLayout), compressed at the end.
+      NodalVector &nodal;
+    };
+
     /**
      * Particle to grid: m_i = sum_p N_ip m_p, (mv)_i = sum_p N_ip m_p v_p,
      * f_i = sum_p [ -V_p sigma_p grad N_ip + N_ip (m_p b_p + A_p t_p) ].
-     * Walks the particles cell by cell with Q1 values computed directly,
-     * adds into the ghosted vector @p nodal (packed with P2GLayout) and
-     * compresses it. (MUSL's re-map of the new momenta is part of G2P.)
+     * Walks the particles cell by cell, adds into the ghosted vector
+     * context.nodal and compresses it. (MUSL's re-map of the new momenta
+     * is part of G2P.) The weights are the family's (standard: Q1 at the
+     * particle; GIMP, CPDI, CPDI2: domain averages, which reach the nodes
+     * of every cell a particle's domain overlaps); the pass is compiled
+     * for each registered family and chosen once per call.
      *
-     * With @p filter, the bodies it filters get their stresses projected
-     * per cell here (remedies::StressFilter, written back to the
-     * particles), and the internal force of the projected field is
-     * integrated exactly over the particle domains
-     * (remedies::AssumedStressForce) instead of summing the particles'
-     * stresses.
+     * Filtered bodies get their stresses projected per cell here
+     * (remedies::StressFilter). In standard MPM the internal force of the
+     * projected field is integrated exactly over the particle domains
+     * (IntegratedFieldForce); the particle-domain families use the
+     * projected stress at each particle (ProjectedStressForce).
      *
-     * With @p domains (GIMP, CPDI, CPDI2) the weights are the family's
-     * domain averages and reach the nodes of every cell a particle's
-     * domain overlaps (particle_to_grid_domains()). Returns an empty
-     * string, or what went wrong with the first bad particle domain.
-     *
-     * @p affine: APIC's slot of C_p in the particle properties (0: no
-     * APIC; APIC needs @p domains); the momentum sent to node i is then
-     * S_ip m_p (v_p + C_p (x_i - x_c)), x_c the domain's centroid.
+     * With APIC the momentum sent to node i is S_ip m_p (v_p + C_p (x_i -
+     * x_c)), x_c the domain's centroid (particle-domain families only).
+     * Returns an empty string, or what went wrong with the first bad
+     * particle domain.
      */
+    template <int dim>
+    std::string
+    particle_to_grid(const P2GContext<dim> &context);
+
+    /// The same for callers that hold the pieces (tests): @p filter null
+    /// filters nothing, @p domains null is standard MPM.
     template <int dim>
     std::string
     particle_to_grid(
@@ -89,29 +96,8 @@ namespace mpm
       const double                                      time,
       const P2GContent                                  content,
       NodalVector                                      &nodal,
-      remedies::StressFilter<dim>                       *filter  = nullptr,
+      remedies::StressFilter<dim>                      *filter  = nullptr,
       const shape_functions::DomainShapeFunctions<dim> *domains = nullptr,
       const unsigned int                                affine  = 0);
-
-    /**
-     * The P2G of the particle-domain families: per particle, the stencil
-     * of its domain (DomainShapeFunctions) scattered straight into
-     * @p nodal. Filtered bodies are projected per cell first (the
-     * particles of a cell's projection are those whose centre it holds);
-     * their force is then the projected particle stress times the
-     * family's gradients.
-     */
-    template <int dim>
-    std::string
-    particle_to_grid_domains(
-      const BackgroundGrid<dim>                        &grid,
-      dealii::Particles::ParticleHandler<dim>          &particles,
-      const std::vector<Body<dim>>                     &bodies,
-      const double                                      time,
-      const P2GContent                                  content,
-      NodalVector                                      &nodal,
-      remedies::StressFilter<dim>                       *filter,
-      const shape_functions::DomainShapeFunctions<dim> &domains,
-      const unsigned int                                affine);
   } // namespace transfer
 } // namespace mpm

@@ -3,8 +3,8 @@
 #include <deal.II/base/tensor.h>
 
 #include <mpm/grid/background_grid.h>
-#include <mpm/grid/grid_update.h>
-#include <mpm/shape_functions/family.h>
+#include <mpm/grid/nodal_layout.h>
+#include <mpm/shape_functions/stencil.h>
 
 namespace mpm
 {
