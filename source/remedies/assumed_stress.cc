@@ -13,14 +13,21 @@ namespace mpm
 
     namespace
     {
-      /// Voigt order: 2D xx yy xy; 3D xx yy zz yz xz xy. Row and column
-      /// of each component, 2D first.
-      constexpr unsigned int voigt_rows[2][6] = {{0, 1, 0}, {0, 1, 2, 1, 0, 0}};
-      constexpr unsigned int voigt_cols[2][6] = {{0, 1, 1}, {0, 1, 2, 2, 2, 1}};
+      /// Voigt order: 2D xx yy xy; 3D xx yy zz yz xz xy. Arrays per
+      /// dimension (not pointers into one table), so that the per-particle
+      /// loop of add() indexes compile-time constants.
       template <int dim>
-      constexpr const unsigned int *voigt_i = voigt_rows[dim == 3];
+      constexpr unsigned int voigt_i[dim == 2 ? 3 : 6] = {};
+      template <>
+      constexpr unsigned int voigt_i<2>[3] = {0, 1, 0};
+      template <>
+      constexpr unsigned int voigt_i<3>[6] = {0, 1, 2, 1, 0, 0};
       template <int dim>
-      constexpr const unsigned int *voigt_j = voigt_cols[dim == 3];
+      constexpr unsigned int voigt_j[dim == 2 ? 3 : 6] = {};
+      template <>
+      constexpr unsigned int voigt_j<2>[3] = {0, 1, 1};
+      template <>
+      constexpr unsigned int voigt_j<3>[6] = {0, 1, 2, 2, 2, 1};
 
       /// Constant-stress columns of the basis (the fallback subspace).
       template <int dim>
