@@ -5,7 +5,6 @@
 
 #include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/simulator.h>
-#include <mpm/solver/stress_update.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/wall_clock.h>
 
