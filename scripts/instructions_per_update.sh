@@ -16,41 +16,15 @@ cells=${CELLS:-$([ "$dim" = 3 ] && echo 16 || echo 64)}
 binaries=("$@")
 [ ${#binaries[@]} -gt 0 ] || binaries=("$root/build/mpm")
 work=$(mktemp -d)
-corner=1.25
-[ "$dim" = 3 ] && corner="1.25, 1.25"
 for v in ${VARIANTS:-standard filter uGIMP cpGIMP CPDI CPDI2}; do
-  family=standard remedy=""
-  case $v in
-    standard) ;;
-    filter) remedy="set Stress filter = assumed stress" ;;
-    theta-bar) remedy="set Volumetric smoothing = cell" ;;
-    *) family=$v ;;
-  esac
   line="${dim}D $v:"
   for i in "${!binaries[@]}"; do
     w="$work/$v-$i"
     mkdir -p "$w"
-    cat > "$w/case.prm" <<PRM
-include $root/prm/throughput_${dim}d.prm
-subsection Grid
-  set Upper corner = 1.25, $corner
-  set Subdivisions = $((cells * 3 / 2))
-end
-subsection Time stepping
-  set Maximum number of steps = 20
-end
-subsection Shape functions
-  set Family = $family
-end
-subsection Bodies
-  subsection Body 0
-    set Subdivisions = $cells
-    subsection Locking remedies
-      $remedy
-    end
-  end
-end
-PRM
+    {
+      "$root/scripts/throughput_case.sh" "$dim" "$cells" "$v"
+      printf 'subsection Time stepping\n  set Maximum number of steps = 20\nend\n'
+    } > "$w/case.prm"
     (cd "$w" && valgrind --tool=callgrind --callgrind-out-file=cg.out \
       --collect-atstart=no "--toggle-collect=mpm::Simulator<$dim>::do_time_step(double)" \
       "${binaries[$i]}" case.prm > log 2> err) &

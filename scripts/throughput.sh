@@ -26,43 +26,8 @@ cells=${1:-$default_cells}
 variant=${2:-standard}
 ranks=${3:-1 2}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-family=standard remedy="" upper=1.25 grid=$((cells * 3 / 2)) interval=0
-at_setup=true
-case "$variant" in
-  standard) ;;
-  unbalanced) at_setup=false ;;
-  corner) upper=2.25 grid=$((cells * 5 / 2)) at_setup=false ;;
-  corner-balanced) upper=2.25 grid=$((cells * 5 / 2)) interval=50 ;;
-  filter) remedy="set Stress filter = assumed stress" ;;
-  theta-bar) remedy="set Volumetric smoothing = cell" ;;
-  uGIMP|cpGIMP|CPDI|CPDI2) family=$variant ;;
-  *) echo "unknown variant '$variant'" >&2; exit 1 ;;
-esac
 work=$(mktemp -d)
-corner=$upper
-[ "$dim" = 3 ] && corner="$upper, $upper"
-cat > "$work/case.prm" <<PRM
-include $root/prm/throughput_${dim}d.prm
-subsection Grid
-  set Upper corner = $upper, $corner
-  set Subdivisions = $grid
-end
-subsection Load balancing
-  set Balance at set-up = $at_setup
-  set Repartition interval (steps) = $interval
-end
-subsection Shape functions
-  set Family = $family
-end
-subsection Bodies
-  subsection Body 0
-    set Subdivisions = $cells
-    subsection Locking remedies
-      $remedy
-    end
-  end
-end
-PRM
+"$root/scripts/throughput_case.sh" "$dim" "$cells" "$variant" > "$work/case.prm"
 cd "$work"
 for np in $ranks; do
   mpirun -np $np "$mpm" case.prm > log.$np
