@@ -15,6 +15,9 @@ dim=${DIM:-2}
 cells=${CELLS:-$([ "$dim" = 3 ] && echo 16 || echo 64)}
 binaries=("$@")
 [ ${#binaries[@]} -gt 0 ] || binaries=("$root/build/mpm")
+for i in "${!binaries[@]}"; do # the runs start in their own directories
+  binaries[$i]=$(realpath "${binaries[$i]}")
+done
 work=$(mktemp -d)
 for v in ${VARIANTS:-standard filter uGIMP cpGIMP CPDI CPDI2}; do
   line="${dim}D $v:"

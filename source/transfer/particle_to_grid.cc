@@ -101,31 +101,57 @@ namespace mpm
                       C   = load_matrix<dim>(prop + c.affine);
                       x_c = stencil_centroid(weights.stencil(), c.grid);
                     }
-                for (unsigned int k = 0; k < weights.size(); ++k)
+                Tensor<1, dim> v_p;
+                if (do_momentum)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    v_p[d] = prop[L::velocity + d];
+                const auto add_mass = [&](double *node, const unsigned int k) {
+                  node[P::mass] += weights.value(k) * m;
+                };
+                const auto add_momentum = [&](double            *node,
+                                              const unsigned int k) {
+                  const double   w = weights.value(k) * m;
+                  Tensor<1, dim> v = v_p;
+                  if constexpr (Family::allows_apic)
+                    if (c.affine)
+                      v += C * (c.grid.node_position(weights.node(k)) - x_c);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    node[P::momentum + d] += w * v[d];
+                };
+                const auto add_force = [&](double *node, const unsigned int k) {
+                  const double         S = weights.value(k);
+                  const Tensor<1, dim> f = sigma * weights.gradient(k);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    node[P::force + d] += f[d] + S * ext[d];
+                };
+                if constexpr (Weights::summation ==
+                              shape_functions::NodalSummation::per_cell)
                   {
-                    double      *node = sum.slot(weights, k);
-                    const double S    = weights.value(k);
+                    // The cell's buffer: one loop per content, with no
+                    // branch inside.
+                    const unsigned int n = weights.size();
                     if (do_mass)
-                      node[P::mass] += S * m;
+                      for (unsigned int k = 0; k < n; ++k)
+                        add_mass(sum.slot(weights, k), k);
                     if (do_momentum)
-                      {
-                        Tensor<1, dim> v;
-                        for (unsigned int d = 0; d < dim; ++d)
-                          v[d] = prop[L::velocity + d];
-                        if constexpr (Family::allows_apic)
-                          if (c.affine)
-                            v +=
-                              C * (c.grid.node_position(weights.node(k)) - x_c);
-                        for (unsigned int d = 0; d < dim; ++d)
-                          node[P::momentum + d] += S * m * v[d];
-                      }
+                      for (unsigned int k = 0; k < n; ++k)
+                        add_momentum(sum.slot(weights, k), k);
                     if (do_force)
-                      {
-                        const Tensor<1, dim> f = sigma * weights.gradient(k);
-                        for (unsigned int d = 0; d < dim; ++d)
-                          node[P::force + d] += f[d] + S * ext[d];
-                      }
+                      for (unsigned int k = 0; k < n; ++k)
+                        add_force(sum.slot(weights, k), k);
                   }
+                else
+                  // straight into the nodes: each node's address once
+                  for (unsigned int k = 0; k < weights.size(); ++k)
+                    {
+                      double *node = sum.slot(weights, k);
+                      if (do_mass)
+                        add_mass(node, k);
+                      if (do_momentum)
+                        add_momentum(node, k);
+                      if (do_force)
+                        add_force(node, k);
+                    }
                 // The traction acts on the loaded face at x_p + d_face.
                 if (loaded_face)
                   {

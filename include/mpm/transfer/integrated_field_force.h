@@ -39,7 +39,7 @@ namespace mpm
       {}
 
       template <typename CellIterator, typename ParticleRange>
-      void
+      inline __attribute__((always_inline)) void
       begin_cell(const CellIterator &cell, const ParticleRange &pic)
       {
         using L                         = ParticleLayout<dim>;
@@ -67,7 +67,7 @@ namespace mpm
       /// -V_p sigma_p, or zero for a filtered body: its particle joins
       /// the cell's projection, whose field gives the force at the end.
       template <typename Particle>
-      dealii::Tensor<2, dim>
+      inline __attribute__((always_inline)) dealii::Tensor<2, dim>
       weighted_stress(const Particle &p, const double *prop, const unsigned b)
       {
         using L             = ParticleLayout<dim>;
