@@ -1,6 +1,5 @@
 #include <mpm/grid/grid_update.h>
 #include <mpm/integrators/explicit_integrator.h>
-#include <mpm/particles/particle_relocation.h>
 #include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
@@ -229,20 +228,7 @@ namespace mpm
                                       state.kinematics,
                                       state.last_dt,
                                       *state.domain_functions));
-    state.lost_messages.clear();
-    if (!relocate_particles(state.background,
-                            state.particle_handler,
-                            state.comm))
-      {
-        state.particle_handler.sort_particles_into_subdomains_and_cells();
-        ++state.n_global_sorts;
-      }
-    if (!state.lost_messages.empty() &&
-        !state.params.boundary.remove_lost_particles)
-      state.local_error.record(
-        state.lost_messages.front() +
-        " (set Boundary conditions/Particles leaving the grid = "
-        "remove to delete such particles instead)");
+    state.relocate_moved_particles();
   }
 
   template <int dim>

@@ -1,4 +1,5 @@
 #include <mpm/integrators/explicit_integrator.h>
+#include <mpm/integrators/implicit_integrator.h>
 #include <mpm/integrators/time_integrator.h>
 
 namespace mpm
@@ -7,6 +8,9 @@ namespace mpm
   std::unique_ptr<TimeIntegrator<dim>>
   create_time_integrator(SimulationState<dim> &state)
   {
+    using Integrator = Parameters::TimeStepping::Integrator;
+    if (state.params.time.integrator == Integrator::quasi_static)
+      return std::make_unique<ImplicitIntegrator<dim>>(state);
     return std::make_unique<ExplicitIntegrator<dim>>(state);
   }
 

@@ -230,6 +230,39 @@ namespace mpm
         stress += stress_increment(c, kinematics.dt * dealii::symmetrize(L), k);
         zero_constrained_components(stress, k);
       }
+
+
+      void
+      hypoelastic_tangent(const IsotropicConstants    &c,
+                          const PointKinematics       &kinematics,
+                          const KinematicAssumption    k,
+                          const SymmetricTensor<2, 3> &stress_n,
+                          Tensor<4, 3>                &tangent)
+      {
+        const Tensor<2, 3> h = kinematics.dt * kinematics.velocity_gradient;
+        const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
+        const Tensor<2, 3> A = 0.25 * (h - dealii::transpose(h));
+        const Tensor<2, 3> R =
+          hughes_winget_rotation(kinematics.velocity_gradient, kinematics.dt);
+        const Tensor<2, 3> to_rotation = dealii::invert(I - A);
+        const Tensor<2, 3> S           = stress_n;
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = 0; b < 3; ++b)
+            {
+              Tensor<2, 3> dh;
+              dh[a][b]                    = 1.;
+              const Tensor<2, 3>    dA    = 0.25 * (dh - dealii::transpose(dh));
+              const Tensor<2, 3>    dR    = to_rotation * dA * (I + R);
+              const Tensor<2, 3>    dRSRt = dR * S * dealii::transpose(R);
+              SymmetricTensor<2, 3> d_sigma =
+                dealii::symmetrize(dRSRt + dealii::transpose(dRSRt)) +
+                stress_increment(c, dealii::symmetrize(dh), k);
+              zero_constrained_components(d_sigma, k);
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 3; ++j)
+                  tangent[i][j][a][b] = d_sigma[i][j];
+            }
+      }
     } // namespace elasticity
   }   // namespace materials
 } // namespace mpm

@@ -52,6 +52,19 @@ namespace mpm
 
 
 
+    bool
+    LinearElastic::stress_tangent(const PointKinematics       &point,
+                                  const SymmetricTensor<2, 3> &stress_n,
+                                  const ArrayView<const double> &,
+                                  Tensor<4, 3> &tangent) const
+    {
+      elasticity::hypoelastic_tangent(
+        constants, point, kinematic_assumption(), stress_n, tangent);
+      return true;
+    }
+
+
+
     double
     LinearElastic::strain_energy_density(const SymmetricTensor<2, 3> &stress,
                                          const Tensor<2, 3>          &F,

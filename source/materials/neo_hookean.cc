@@ -84,6 +84,38 @@ namespace mpm
 
 
 
+    bool
+    NeoHookean::stress_tangent(const PointKinematics &point,
+                               const SymmetricTensor<2, 3> &,
+                               const ArrayView<const double> &,
+                               Tensor<4, 3> &tangent) const
+    {
+      const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
+      const Tensor<2, 3> f_inverse =
+        dealii::invert(I + point.dt * point.velocity_gradient);
+      const double       J     = jacobian(point.F);
+      const Tensor<2, 3> b     = point.F * dealii::transpose(point.F);
+      const Tensor<2, 3> sigma = cauchy_stress(point.F);
+      const double       mu = constants.mu(), lambda = constants.lambda();
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int l = 0; l < 3; ++l)
+          {
+            Tensor<2, 3> dl; // (e_k x e_l) f^-1
+            for (unsigned int m = 0; m < 3; ++m)
+              dl[k][m] = f_inverse[l][m];
+            const double       tr_dl = dl[k][k];
+            const Tensor<2, 3> d_tau =
+              mu * (dl * b + b * dealii::transpose(dl)) + lambda * tr_dl * I;
+            const Tensor<2, 3> d_sigma = d_tau / J - tr_dl * sigma;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                tangent[i][j][k][l] = d_sigma[i][j];
+          }
+      return true;
+    }
+
+
+
     double
     NeoHookean::strain_energy_density(const SymmetricTensor<2, 3> &,
                                       const Tensor<2, 3> &F,

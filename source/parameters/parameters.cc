@@ -32,6 +32,16 @@ namespace mpm
     {
       prm.enter_subsection("Time stepping");
       prm.declare_entry("End time", "1", Patterns::Double(0), "End time [s].");
+      prm.declare_entry(
+        "Integrator",
+        "explicit",
+        Patterns::Selection("explicit|quasi-static"),
+        "explicit: explicit dynamics (the scheme, step control, FLIP "
+        "and damping entries below). quasi-static: every step solves "
+        "the static equilibrium at the end of the step by Newton's method "
+        "(subsection Implicit solver); time is a pseudo-time that ramps "
+        "the loads, the step is Time step (Time step control = fixed), "
+        "and the particles keep their velocity.");
       prm.declare_entry("Scheme",
                         "MUSL",
                         Patterns::Selection("USF|USL|MUSL"),
@@ -88,6 +98,9 @@ namespace mpm
     {
       prm.enter_subsection("Time stepping");
       end_time            = prm.get_double("End time");
+      integrator          = prm.get("Integrator") == "quasi-static" ?
+                              Integrator::quasi_static :
+                              Integrator::explicit_dynamics;
       const std::string s = prm.get("Scheme");
       scheme              = s == "USF" ? Scheme::usf :
                             s == "USL" ? Scheme::usl :
@@ -102,6 +115,18 @@ namespace mpm
       damping             = prm.get_double("Damping coefficient");
       max_steps           = prm.get_integer("Maximum number of steps");
       prm.leave_subsection();
+      if (integrator == Integrator::quasi_static)
+        {
+          if (step_control != StepControl::fixed)
+            throw InputError(
+              "Time stepping/Integrator = quasi-static has no stability "
+              "limit to take a CFL fraction of: set Time step control = "
+              "fixed and the load step as Time step");
+          if (damping != 0. || apic)
+            throw InputError(
+              "Time stepping/Integrator = quasi-static has no dynamics: "
+              "remove Damping coefficient and Velocity transfer = APIC");
+        }
       if (step_control == StepControl::fixed && !(time_step > 0))
         throw InputError("Time stepping/Time step must be positive");
       if (step_control == StepControl::cfl && !(cfl_number > 0))
@@ -588,6 +613,7 @@ namespace mpm
       Output::declare_parameters(prm);
       Checkpointing::declare_parameters(prm);
       LoadBalancing::declare_parameters(prm);
+      ImplicitSolver::declare_parameters(prm);
       prm.enter_subsection("Bodies");
       for (unsigned int i = 0; i < n_bodies; ++i)
         {
@@ -639,6 +665,7 @@ namespace mpm
       output.parse_parameters(prm);
       checkpointing.parse_parameters(prm);
       load_balancing.parse_parameters(prm);
+      implicit.parse_parameters(prm);
       bodies.resize(n_bodies);
       const ConstantsScope scope(constants);
       prm.enter_subsection("Bodies");

@@ -65,6 +65,8 @@ namespace mpm
         void
         check(const Context &context) const override
         {
+          require_explicit_integrator(context,
+                                      "Stress filter = assumed stress");
           const std::string here     = context.where + "/Locking remedies: ";
           const auto       &material = context.material;
           if (context.dimension == 1)

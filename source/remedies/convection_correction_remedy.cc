@@ -38,6 +38,8 @@ namespace mpm
         void
         check(const Context &context) const override
         {
+          require_explicit_integrator(context,
+                                      "Stress filter = convection correction");
           if (context.dimension != 1)
             throw InputError(context.where +
                              ": Locking remedies/Stress filter = convection "

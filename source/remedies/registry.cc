@@ -1,4 +1,6 @@
+#include <mpm/parameters/parameters.h>
 #include <mpm/remedies/registry.h>
+#include <mpm/utilities/input_error.h>
 
 #include <map>
 #include <stdexcept>
@@ -94,6 +96,17 @@ namespace mpm
           selection.add(std::move(remedy));
         }
       return selection;
+    }
+    void
+    require_explicit_integrator(const Context     &context,
+                                const std::string &remedy)
+    {
+      if (context.time.integrator !=
+          Parameters::TimeStepping::Integrator::explicit_dynamics)
+        throw InputError(context.where + "/Locking remedies: " + remedy +
+                         " has no linearization for Time stepping/"
+                         "Integrator = quasi-static yet; remove it or use "
+                         "Integrator = explicit");
     }
   } // namespace remedies
 } // namespace mpm

@@ -28,8 +28,14 @@ namespace mpm
         {}
 
         void
-        check(const Context &) const override
-        {}
+        check(const Context &context) const override
+        {
+          require_explicit_integrator(context,
+                                      std::string("Volumetric smoothing = ") +
+                                        (average == VolumeAverage::cell ?
+                                           "cell" :
+                                           "node"));
+        }
       };
 
       using CellSmoothing = VolumetricSmoothingRemedy<VolumeAverage::cell>;

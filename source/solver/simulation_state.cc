@@ -1,4 +1,5 @@
 #include <mpm/grid/grid_update.h>
+#include <mpm/particles/particle_relocation.h>
 #include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/solver/simulation_state.h>
 #include <mpm/transfer/particle_to_grid.h>
@@ -16,6 +17,22 @@ namespace mpm
     if (remedies::VolumetricSmoothing<dim>::through_nodes(bodies))
       background.initialize_vector(
         volume_sums, remedies::VolumetricSmoothing<dim>::n_node_sums);
+  }
+
+  template <int dim>
+  void
+  SimulationState<dim>::relocate_moved_particles()
+  {
+    lost_messages.clear();
+    if (!relocate_particles(background, particle_handler, comm))
+      {
+        particle_handler.sort_particles_into_subdomains_and_cells();
+        ++n_global_sorts;
+      }
+    if (!lost_messages.empty() && !params.boundary.remove_lost_particles)
+      local_error.record(lost_messages.front() +
+                         " (set Boundary conditions/Particles leaving the "
+                         "grid = remove to delete such particles instead)");
   }
 
   template struct SimulationState<1>;

@@ -223,6 +223,20 @@ namespace mpm
   }
 
   template <int dim>
+  std::vector<double>
+  Simulator<dim>::integrator_values() const
+  {
+    return integrator->statistics_values();
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  Simulator<dim>::integrator_columns() const
+  {
+    return integrator->statistics_columns();
+  }
+
+  template <int dim>
   void
   Simulator<dim>::filter_stress()
   {

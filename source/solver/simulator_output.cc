@@ -77,9 +77,15 @@ namespace mpm
                                 checkpoint::read_file(resume_folder +
                                                       "/statistics.txt"));
       else
-        statistics_file->open(out.directory + "/statistics.txt",
-                              benchmark ? benchmark->columns() :
-                                          std::vector<std::string>());
+        {
+          // the integrator's columns (its solver's iterations), then the
+          // benchmark's measures
+          auto columns = integrator->statistics_columns();
+          if (benchmark)
+            for (const auto &c : benchmark->columns())
+              columns.push_back(c);
+          statistics_file->open(out.directory + "/statistics.txt", columns);
+        }
       // Every entry of this run (defaults included, no comments), so
       // that scripts/recompute_measures.py finds the benchmark, its
       // constants and the grid beside the output.
@@ -148,8 +154,10 @@ namespace mpm
       problem.record(clean_dealii_message(problem_of(write)));
     };
     attempt([&]() {
+      auto values = integrator->statistics_values();
+      values.insert(values.end(), extra.begin(), extra.end());
       statistics_file->write_row(
-        state.current_time, state.current_step, state.last_dt, stats, extra);
+        state.current_time, state.current_step, state.last_dt, stats, values);
     });
     if (out.write_vtu)
       {

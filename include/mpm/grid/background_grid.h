@@ -186,6 +186,25 @@ namespace mpm
         }
     }
 
+    /// Number of constrained directions of node i (owned or ghost;
+    /// complete at the nodes of owned cells): dim at a fixed node, one per
+    /// wall at a slip node, 0 if free.
+    unsigned int
+    n_constrained_directions(const unsigned int i) const
+    {
+      const auto c = constraint_of_node[i];
+      return c == dealii::numbers::invalid_unsigned_int ?
+               0 :
+               constraints[c].n_normals;
+    }
+
+    /// Constrained direction k of node i (orthonormal to the others).
+    const dealii::Tensor<1, dim> &
+    constrained_direction(const unsigned int i, const unsigned int k) const
+    {
+      return constraints[constraint_of_node[i]].normals[k];
+    }
+
     /// Global grid statistics for the screen.
     dealii::types::global_cell_index
     n_global_cells() const

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace mpm
 {
@@ -46,6 +47,21 @@ namespace mpm
     /// particles (before the first output, when no step has made them).
     virtual void
     compute_nodal_fields() = 0;
+
+    /// Names of the integrator's own columns of the statistics file
+    /// (the solver's iteration counts of an implicit step, say).
+    virtual std::vector<std::string>
+    statistics_columns() const
+    {
+      return {};
+    }
+
+    /// Their values for the last step.
+    virtual std::vector<double>
+    statistics_values() const
+    {
+      return {};
+    }
 
   protected:
     SimulationState<dim> &state;

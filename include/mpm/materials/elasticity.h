@@ -63,6 +63,19 @@ namespace mpm
                        const dealii::SymmetricTensor<2, 3> &d_eps,
                        const KinematicAssumption            k);
 
+      /**
+       * d sigma_ij / d h_kl of hypoelastic_update() (h = dt L): the
+       * derivative of the Hughes-Winget rotation of @p stress_n,
+       * dR = (I - A)^-1 dA (I + R) with A = skew(h) / 2, plus the elastic
+       * moduli under the assumption @p k.
+       */
+      void
+      hypoelastic_tangent(const IsotropicConstants            &c,
+                          const PointKinematics               &kinematics,
+                          const KinematicAssumption            k,
+                          const dealii::SymmetricTensor<2, 3> &stress_n,
+                          dealii::Tensor<4, 3>                &tangent);
+
       /// Complementary energy per unit current volume,
       /// 1/(2E) [(1+nu) s:s - nu (tr s)^2].
       double

@@ -33,6 +33,12 @@ namespace mpm
                     SymmetricTensor<2, 3>   &stress,
                     const ArrayView<double> &history) const override;
 
+      bool
+      stress_tangent(const PointKinematics         &kinematics,
+                     const SymmetricTensor<2, 3>   &stress_n,
+                     const ArrayView<const double> &history_n,
+                     Tensor<4, 3>                  &tangent) const override;
+
       /// J times the complementary energy of the stress.
       double
       strain_energy_density(

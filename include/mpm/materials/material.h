@@ -90,6 +90,37 @@ namespace mpm
                     SymmetricTensor<2, 3>   &stress,
                     const ArrayView<double> &history) const = 0;
 
+      /**
+       * The tangent of update_stress() for the implicit integrators:
+       * tangent[i][j][k][l] = d sigma_ij / d h_kl, with h = dt L the
+       * step's displacement gradient (with respect to the configuration at
+       * the start of the step), at the kinematics given and from the stress
+       * @p stress_n and history @p history_n at the start of the step (the
+       * inputs of update_stress()). Only the components of h that the
+       * kinematic assumption lets vary are used. False: the model has no
+       * tangent, and the implicit integrators refuse it.
+       */
+      virtual bool
+      stress_tangent(const PointKinematics         &kinematics,
+                     const SymmetricTensor<2, 3>   &stress_n,
+                     const ArrayView<const double> &history_n,
+                     Tensor<4, 3>                  &tangent) const
+      {
+        (void)kinematics;
+        (void)stress_n;
+        (void)history_n;
+        (void)tangent;
+        return false;
+      }
+
+      /// Whether the stress derives from a stored energy of F (hyperelastic):
+      /// the implicit stiffness is then symmetric, and CG solves with it.
+      virtual bool
+      has_symmetric_tangent() const
+      {
+        return false;
+      }
+
       /// Stored strain energy per unit reference volume.
       virtual double
       strain_energy_density(const SymmetricTensor<2, 3>   &stress,

@@ -47,6 +47,20 @@ namespace mpm
       wave_speed(const Tensor<2, 3> &F) const override;
 
       /// Cauchy stress for the deformation gradient F.
+      /// Exact: d tau = mu (dl b + b dl^T) + lambda tr(dl) I with
+      /// dl = dh f^-1, f = I + h, and sigma = tau / J.
+      bool
+      stress_tangent(const PointKinematics         &kinematics,
+                     const SymmetricTensor<2, 3>   &stress_n,
+                     const ArrayView<const double> &history_n,
+                     Tensor<4, 3>                  &tangent) const override;
+
+      bool
+      has_symmetric_tangent() const override
+      {
+        return true;
+      }
+
       SymmetricTensor<2, 3>
       cauchy_stress(const Tensor<2, 3> &F) const;
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/types.h>
 
 #include <mpm/grid/grid_parameters.h>
+#include <mpm/integrators/implicit_parameters.h>
 #include <mpm/materials/material.h>
 #include <mpm/remedies/selection.h>
 #include <mpm/shape_functions/family.h>
@@ -37,6 +38,14 @@ namespace mpm
         fixed,
         cfl
       };
+      /// explicit dynamics, or Newton's method on the quasi-static
+      /// equilibrium of every step (load steps in pseudo-time)
+      enum class Integrator
+      {
+        explicit_dynamics,
+        quasi_static
+      };
+      Integrator   integrator    = Integrator::explicit_dynamics;
       Scheme       scheme        = Scheme::musl;
       StepControl  step_control  = StepControl::cfl;
       double       end_time      = 1.0;
@@ -161,6 +170,7 @@ namespace mpm
       Output                 output;
       Checkpointing          checkpointing;
       LoadBalancing          load_balancing;
+      ImplicitSolver         implicit;
       std::string            benchmark = "none";
       std::map<std::string, double> constants;
 

@@ -53,5 +53,12 @@ namespace mpm
       virtual void
       check(const Context &context) const = 0;
     };
+
+    /// Throw an InputError naming the body and @p remedy (its slot and
+    /// choice, "Stress filter = assumed stress") if the run integrates
+    /// implicitly: for a remedy whose linearization is not built.
+    void
+    require_explicit_integrator(const Context     &context,
+                                const std::string &remedy);
   } // namespace remedies
 } // namespace mpm

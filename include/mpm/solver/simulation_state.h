@@ -46,6 +46,12 @@ namespace mpm
     void
     initialize_nodal_vectors();
 
+    /// Sort the particles that moved into their new cells (and ranks);
+    /// particles that left the grid stop the run unless they are to be
+    /// removed (Boundary conditions/Particles leaving the grid).
+    void
+    relocate_moved_particles();
+
     const Parameters::AllParameters<dim> &params;
     const MPI_Comm                        comm;
     dealii::ConditionalOStream           &pcout;

@@ -82,6 +82,14 @@ namespace mpm
     std::vector<double>
     benchmark_values();
 
+    /// The integrator's statistics columns of the last step (an implicit
+    /// step's iteration counts; empty for the explicit one), named by
+    /// integrator_columns().
+    std::vector<double>
+    integrator_values() const;
+    std::vector<std::string>
+    integrator_columns() const;
+
     /// Steps in which the project's particle relocation could not place
     /// every particle and deal.II's global sort ran instead.
     unsigned int

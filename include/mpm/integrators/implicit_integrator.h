@@ -1,0 +1,110 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <mpm/integrators/nodal_linear_system.h>
+#include <mpm/integrators/time_integrator.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  /**
+   * The quasi-static implicit step (doc/implicit.md): each step solves the
+   * equilibrium f_int(u) = f_ext(t_n+1) for the nodal displacement
+   * increment u by Newton's method, with updated-Lagrangian kinematics at
+   * the particles. Phases of one step:
+   *   nodal mass (which nodes are unknowns) -> constraints ->
+   *   Newton: assemble residual and tangent -> AMG-preconditioned Krylov
+   *           solve -> line search -> converged?
+   *   -> stress update with the converged increment -> particle motion.
+   * A step whose Newton iteration fails is cut in half (at most Maximum
+   * step cuts times); the halves grow back once Newton converges in few
+   * iterations. The particles' F, stress and history change only with a
+   * converged increment.
+   */
+  template <int dim>
+  class ImplicitIntegrator : public TimeIntegrator<dim>
+  {
+  public:
+    /// Refuses (InputError) what the step has no consistent form for.
+    explicit ImplicitIntegrator(SimulationState<dim> &state);
+
+    std::string
+    name() const override
+    {
+      return "quasi-static";
+    }
+
+    void
+    initialize() override;
+
+    double
+    next_step_length() const override;
+
+    void
+    advance(const double dt) override;
+
+    void
+    compute_nodal_fields() override;
+
+    std::vector<std::string>
+    statistics_columns() const override;
+
+    std::vector<double>
+    statistics_values() const override;
+
+  private:
+    using TimeIntegrator<dim>::state;
+
+    /// Norms of one assembly.
+    struct Residual
+    {
+      double norm      = 0; ///< of the free unknowns
+      double reference = 0; ///< max(|f_ext|, |f_int|) over all unknowns
+    };
+
+    struct NewtonResult
+    {
+      bool                converged         = false;
+      unsigned int        iterations        = 0;
+      unsigned int        linear_iterations = 0;
+      std::vector<double> residuals; ///< relative, per iteration
+      std::string         error;     ///< why it failed (if it did)
+    };
+
+    // The phases of one (sub-)step of length dt ending at t.
+    void
+    find_unknowns();
+    NewtonResult
+    solve_equilibrium(const double t, const double dt);
+    /// Residual (and tangent) at the current increment; false and
+    /// @p error set if a particle inverts or its material fails.
+    bool
+    assemble(const double t,
+             const double dt,
+             const bool   with_matrix,
+             Residual    &residual,
+             std::string &error);
+    void
+    commit(const double dt);
+
+    /// The increment += alpha * delta (owned entries), ghosts updated.
+    void
+    add_to_increment(const dealii::TrilinosWrappers::MPI::Vector &delta,
+                     const double                                 alpha);
+
+    Parameters::ImplicitSolver::LinearSolver linear_solver;
+    NodalLinearSystem<dim>                   system;
+    /// The partition the system was built for.
+    std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partition;
+    NodalVector         increment; ///< u, dim components per node
+    NodalVector         internal_force, external_force;
+    std::vector<char>   active; ///< per node-local index: has mass
+    NewtonResult        last;   ///< of the last sub-step
+    unsigned int        last_cuts = 0;
+    std::vector<double> history_scratch;
+  };
+} // namespace mpm

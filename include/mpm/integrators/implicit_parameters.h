@@ -1,0 +1,40 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace mpm
+{
+  namespace Parameters
+  {
+    /**
+     * subsection Implicit solver: Newton's method of the implicit step and
+     * its linear solver (integrators/implicit_integrator.h). Part of the
+     * parameter file of parameters/parameters.h, kept beside the
+     * integrator that reads it.
+     */
+    struct ImplicitSolver
+    {
+      enum class LinearSolver
+      {
+        automatic, ///< CG if every material's tangent is symmetric, else GMRES
+        cg,
+        gmres,
+        direct
+      };
+      double       residual_tolerance          = 1e-8;
+      double       absolute_residual_tolerance = 1e-12;
+      double       energy_tolerance            = 1e-12;
+      unsigned int max_iterations              = 20;
+      bool         line_search                 = true;
+      unsigned int max_step_cuts               = 6;
+      LinearSolver linear_solver               = LinearSolver::automatic;
+      double       linear_tolerance            = 1e-10;
+      unsigned int max_linear_iterations       = 2000;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+  } // namespace Parameters
+} // namespace mpm

@@ -1,0 +1,120 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <mpm/grid/background_grid.h>
+#include <mpm/integrators/implicit_parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  /**
+   * The linear system of an implicit step on the background grid, on
+   * Trilinos: one unknown per node and direction, numbered as the grid's
+   * packed nodal vectors with dim components (global index dim g + c for
+   * node g), so that a nodal vector and a Trilinos vector share their
+   * locally owned entries in the same order. The sparsity couples the
+   * nodes of every owned cell (built once per partition); the constraints
+   * (fixed and slip walls, nodes without mass) are rebuilt every step.
+   */
+  template <int dim>
+  class NodalLinearSystem
+  {
+  public:
+    using Index = dealii::types::global_dof_index;
+
+    /// Index sets and sparsity of the grid's current partition.
+    void
+    reinit(const BackgroundGrid<dim> &grid, const MPI_Comm comm);
+
+    /// Constraints of this step: every direction of a node whose @p active
+    /// entry (per node-local index) is 0, the walls' normal directions of
+    /// the others. Only the nodes of owned cells are constrained (the
+    /// rows this rank assembles).
+    void
+    build_constraints(const BackgroundGrid<dim> &grid,
+                      const std::vector<char>   &active);
+
+    /// The global indices of the unknowns of a cell's nodes, node-major.
+    void
+    cell_indices(const unsigned int *nodes, std::vector<Index> &indices) const;
+
+    /// Start an assembly: matrix (if @p with_matrix) and right-hand side
+    /// zero.
+    void
+    begin_assembly(const bool with_matrix);
+
+    /// Add a cell's matrix and right-hand side (the negative residual),
+    /// condensing the constraints.
+    void
+    add_cell(const dealii::FullMatrix<double> &cell_matrix,
+             const dealii::Vector<double>     &cell_rhs,
+             const std::vector<Index>         &indices);
+    void
+    add_cell_rhs(const dealii::Vector<double> &cell_rhs,
+                 const std::vector<Index>     &indices);
+
+    /// Exchange the sums; constrained rows that no cell reached get a
+    /// diagonal so that the matrix is regular.
+    void
+    finish_assembly(const bool with_matrix);
+
+    /// The norm of the assembled right-hand side (free unknowns only).
+    double
+    rhs_norm() const
+    {
+      return rhs.l2_norm();
+    }
+
+    struct SolveResult
+    {
+      unsigned int iterations = 0;
+      std::string  error; ///< empty: solved
+    };
+
+    /// Solve K x = rhs with the method of @p p (CG, GMRES, or direct when
+    /// @p solver asks so); x satisfies the constraints. The near-null
+    /// space of the AMG preconditioner is the rigid-body motion of the
+    /// nodes at @p grid's node positions.
+    SolveResult
+    solve(const BackgroundGrid<dim>                     &grid,
+          const Parameters::ImplicitSolver              &p,
+          const Parameters::ImplicitSolver::LinearSolver solver,
+          dealii::TrilinosWrappers::MPI::Vector         &x);
+
+    /// A vector of the owned unknowns.
+    void
+    initialize_vector(dealii::TrilinosWrappers::MPI::Vector &v) const
+    {
+      v.reinit(owned, comm);
+    }
+
+    const dealii::AffineConstraints<double> &
+    constraints() const
+    {
+      return node_constraints;
+    }
+
+    const dealii::TrilinosWrappers::MPI::Vector &
+    right_hand_side() const
+    {
+      return rhs;
+    }
+
+  private:
+    MPI_Comm                               comm = MPI_COMM_SELF;
+    std::vector<Index>                     node_to_global; ///< per local node
+    dealii::IndexSet                       owned, relevant;
+    dealii::AffineConstraints<double>      node_constraints;
+    dealii::TrilinosWrappers::SparseMatrix matrix;
+    dealii::TrilinosWrappers::MPI::Vector  rhs;
+    double diagonal_scale = 1; ///< of the constrained rows' diagonal
+  };
+} // namespace mpm

@@ -1,0 +1,558 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <mpm/grid/nodal_layout.h>
+#include <mpm/integrators/implicit_integrator.h>
+#include <mpm/particles/cell_loop.h>
+#include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/volumetric_smoothing.h>
+#include <mpm/shape_functions/cell_q1_weights.h>
+#include <mpm/solver/stress_update.h>
+#include <mpm/transfer/grid_to_particle.h>
+#include <mpm/transfer/particle_to_grid.h>
+#include <mpm/utilities/input_error.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace mpm
+{
+  using namespace dealii;
+
+  template <int dim>
+  ImplicitIntegrator<dim>::ImplicitIntegrator(SimulationState<dim> &s)
+    : TimeIntegrator<dim>(s)
+  {
+    using LinearSolver = Parameters::ImplicitSolver::LinearSolver;
+    const auto &p      = state.params;
+    if (p.shape_functions.family != shape_functions::Family::standard)
+      throw InputError(
+        std::string(
+          "Time stepping/Integrator = quasi-static: Shape functions/Family = ") +
+        shape_functions::family_name(p.shape_functions.family) +
+        " has no implicit form yet; use standard");
+    bool symmetric = true;
+    for (unsigned int b = 0; b < state.bodies.size(); ++b)
+      {
+        // (the remedies refuse the integrator themselves)
+        const auto  &body     = state.bodies[b];
+        const auto   section  = "Bodies/" + Parameters::body_section(b);
+        const auto  &material = *body.material;
+        Tensor<4, 3> tangent;
+        materials::PointKinematics at_rest;
+        at_rest.F  = unit_symmetric_tensor<3>();
+        at_rest.dt = 1;
+        std::vector<double> history(material.n_history());
+        if (!material.stress_tangent(at_rest,
+                                     SymmetricTensor<2, 3>(),
+                                     ArrayView<const double>(history),
+                                     tangent))
+          throw InputError(section + "/Material/Model = " + material.name() +
+                           " has no tangent for Time stepping/Integrator = "
+                           "quasi-static; use the explicit integrator");
+        symmetric = symmetric && material.has_symmetric_tangent();
+      }
+    linear_solver = p.implicit.linear_solver;
+    if (linear_solver == LinearSolver::automatic)
+      linear_solver = symmetric ? LinearSolver::cg : LinearSolver::gmres;
+    if (linear_solver == LinearSolver::cg && !symmetric)
+      throw InputError(
+        "Implicit solver/Linear solver = CG needs a symmetric tangent, but "
+        "a material of the bodies is not hyperelastic: use GMRES (or "
+        "automatic)");
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::initialize()
+  {
+    // No stability limit: the step is the load step.
+    state.stable_dt = std::numeric_limits<double>::max();
+  }
+
+  template <int dim>
+  double
+  ImplicitIntegrator<dim>::next_step_length() const
+  {
+    return state.params.time.time_step;
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::compute_nodal_fields()
+  {
+    const transfer::P2GContext<dim> context{
+      {state.background, state.particle_handler, nullptr, 0},
+      state.bodies,
+      *state.stress_filter,
+      state.current_time,
+      transfer::P2GContent::mass_momentum,
+      state.p2g};
+    state.local_error.record(transfer::particle_to_grid(context));
+    state.p2g.update_ghost_values();
+  }
+
+  namespace
+  {
+    /// The order of convergence of the last three residuals above the
+    /// round-off floor (1e-12 relative), log(r_k / r_k-1) /
+    /// log(r_k-1 / r_k-2): 2 for quadratic convergence; 0 if fewer.
+    double
+    convergence_rate(const std::vector<double> &residuals)
+    {
+      std::vector<double> r;
+      for (const double x : residuals)
+        if (x > 1e-12)
+          r.push_back(x);
+      const std::size_t n = r.size();
+      if (n < 3 || r[n - 2] == r[n - 3])
+        return 0.;
+      return std::log(r[n - 1] / r[n - 2]) / std::log(r[n - 2] / r[n - 3]);
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<std::string>
+  ImplicitIntegrator<dim>::statistics_columns() const
+  {
+    return {"newton_iterations",
+            "linear_iterations",
+            "step_cuts",
+            "relative_residual",
+            "convergence_rate"};
+  }
+
+  template <int dim>
+  std::vector<double>
+  ImplicitIntegrator<dim>::statistics_values() const
+  {
+    return {double(last.iterations),
+            double(last.linear_iterations),
+            double(last_cuts),
+            last.residuals.empty() ? 0. : last.residuals.back(),
+            convergence_rate(last.residuals)};
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::advance(const double dt)
+  {
+    const auto &p = state.params.implicit;
+    if (partition != state.background.node_partitioner())
+      {
+        TimerOutput::Scope t(state.timer, "implicit set-up");
+        partition = state.background.node_partitioner();
+        system.reinit(state.background, state.comm);
+        state.background.initialize_vector(increment, dim);
+        state.background.initialize_vector(internal_force, dim);
+        state.background.initialize_vector(external_force, dim);
+      }
+    // Sub-steps: halved when Newton fails, doubled again (up to dt) when
+    // it converges in few iterations.
+    double       t         = state.current_time;
+    const double t_end     = t + dt;
+    double       sub       = dt;
+    unsigned int depth     = 0;
+    last_cuts              = 0;
+    unsigned int total_its = 0, total_linear = 0;
+    while (t_end - t > 1e-12 * dt)
+      {
+        const double h = std::min(sub, t_end - t);
+        find_unknowns();
+        last = solve_equilibrium(t + h, h);
+        total_its += last.iterations;
+        total_linear += last.linear_iterations;
+        if (!last.converged)
+          {
+            if (depth == p.max_step_cuts)
+              {
+                std::ostringstream s;
+                s << "Newton's method failed at t = " << t + h << " after "
+                  << depth << " step cuts (Implicit solver/Maximum step cuts): "
+                  << last.error << "; relative residuals:";
+                for (const double r : last.residuals)
+                  s << ' ' << std::setprecision(3) << r;
+                state.local_error.record(s.str());
+                return;
+              }
+            sub = h / 2;
+            ++depth;
+            ++last_cuts;
+            state.pcout << "  Newton failed (" << last.error
+                        << "): step cut to " << sub << std::endl;
+            continue;
+          }
+        commit(h);
+        t += h;
+        if (last.iterations <= 4 && depth > 0)
+          {
+            sub *= 2;
+            --depth;
+          }
+      }
+    last.iterations        = total_its;
+    last.linear_iterations = total_linear;
+    std::ostringstream s;
+    s << "  Newton: " << total_its << " iterations, " << total_linear
+      << " linear iterations";
+    if (last_cuts > 0)
+      s << ", " << last_cuts << " step cuts";
+    s << "; relative residuals";
+    for (const double r : last.residuals)
+      s << ' ' << std::scientific << std::setprecision(2) << r;
+    state.pcout << s.str() << std::endl;
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::find_unknowns()
+  {
+    // Nodes without mass (no particle reaches them) are not unknowns.
+    compute_nodal_fields();
+    using P          = transfer::P2GLayout<dim>;
+    const auto &grid = state.background;
+    active.assign(grid.n_local_nodes(), 0);
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      active[i] = state.p2g.local_element(i * P::n_components + P::mass) >
+                  state.min_nodal_mass;
+    system.build_constraints(grid, active);
+    increment = 0.;
+  }
+
+  template <int dim>
+  typename ImplicitIntegrator<dim>::NewtonResult
+  ImplicitIntegrator<dim>::solve_equilibrium(const double t, const double dt)
+  {
+    const auto  &p = state.params.implicit;
+    NewtonResult result;
+    Residual     r;
+    if (!assemble(t, dt, true, r, result.error))
+      return result;
+    TrilinosWrappers::MPI::Vector delta;
+    double                        first_energy = 0;
+    const auto                    relative     = [](const Residual &r) {
+      return r.reference > 0 ? r.norm / r.reference : r.norm;
+    };
+    result.residuals.push_back(relative(r));
+    for (;;)
+      {
+        const bool small_residual =
+          r.norm <= p.residual_tolerance * r.reference ||
+          r.norm <= p.absolute_residual_tolerance;
+        if (small_residual && result.iterations == 0)
+          {
+            result.converged = true;
+            return result;
+          }
+        if (result.iterations == p.max_iterations)
+          {
+            result.error = "no convergence in " +
+                           std::to_string(p.max_iterations) + " iterations";
+            return result;
+          }
+        {
+          TimerOutput::Scope timer(state.timer, "implicit linear solve");
+          const auto         solved =
+            system.solve(state.background, p, linear_solver, delta);
+          result.linear_iterations += solved.iterations;
+          if (!solved.error.empty())
+            {
+              result.error = solved.error;
+              return result;
+            }
+        }
+        ++result.iterations;
+        const double energy = std::abs(delta * system.right_hand_side());
+        if (result.iterations == 1)
+          first_energy = energy;
+        // Backtracking: halve the increment until the residual decreases.
+        const double previous = r.norm;
+        double       alpha    = 1;
+        add_to_increment(delta, alpha);
+        bool assembled = assemble(t, dt, true, r, result.error);
+        for (unsigned int k = 0;
+             p.line_search && k < 6 && (!assembled || r.norm > previous);
+             ++k)
+          {
+            add_to_increment(delta, -alpha / 2);
+            alpha /= 2;
+            result.error.clear();
+            assembled = assemble(t, dt, false, r, result.error);
+          }
+        if (!assembled)
+          return result;
+        if (alpha < 1 && !assemble(t, dt, true, r, result.error))
+          return result;
+        result.residuals.push_back(relative(r));
+        // The energy criterion compares this increment with the first; an
+        // increment that is the first leaves the residual to decide.
+        const bool small_energy = result.iterations == 1 ||
+                                  energy <= p.energy_tolerance * first_energy;
+        if ((r.norm <= p.residual_tolerance * r.reference ||
+             r.norm <= p.absolute_residual_tolerance) &&
+            small_energy)
+          {
+            result.converged = true;
+            return result;
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::add_to_increment(
+    const TrilinosWrappers::MPI::Vector &delta,
+    const double                         alpha)
+  {
+    const unsigned int n = dim * state.background.n_owned_nodes();
+    const double      *d = delta.begin();
+    for (unsigned int k = 0; k < n; ++k)
+      increment.local_element(k) += alpha * d[k];
+    increment.update_ghost_values();
+  }
+
+  template <int dim>
+  bool
+  ImplicitIntegrator<dim>::assemble(const double t,
+                                    const double dt,
+                                    const bool   with_matrix,
+                                    Residual    &residual,
+                                    std::string &error)
+  {
+    TimerOutput::Scope timer(state.timer, "implicit assembly");
+    using L                     = ParticleLayout<dim>;
+    constexpr unsigned int nv   = shape_functions::n_q1<dim>;
+    constexpr unsigned int n    = nv * dim;
+    const auto            &grid = state.background;
+    system.begin_assembly(with_matrix);
+    internal_force      = 0.;
+    external_force      = 0.;
+    double *const f_int = internal_force.begin();
+    double *const f_ext = external_force.begin();
+
+    std::vector<char> loaded(state.bodies.size());
+    for (unsigned int b = 0; b < state.bodies.size(); ++b)
+      loaded[b] = state.bodies[b].has_body_force();
+
+    shape_functions::CellQ1Weights<dim>  weights(grid, nullptr);
+    FullMatrix<double>                   cell_matrix(n, n);
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> indices;
+    materials::PointKinematics           kinematics;
+    kinematics.dt = dt;
+    bool ok       = true;
+
+    for_each_cell_with_particles(
+      grid, state.particle_handler, [&](const auto &cell, const auto &pic) {
+        if (!ok)
+          return;
+        weights.begin_cell(cell);
+        const unsigned int *nodes = grid.nodes(cell);
+        cell_matrix               = 0.;
+        cell_rhs                  = 0.;
+        for (const auto &particle : pic)
+          {
+            const double *prop = particle.get_properties().data();
+            weights.evaluate(particle, true, error);
+            const unsigned int b = static_cast<unsigned int>(prop[L::body]);
+            const auto        &material = *state.bodies[b].material;
+
+            // h = sum_a u_a (x) G_a: the step's displacement gradient with
+            // respect to the configuration at the start of the step.
+            Tensor<2, dim> h;
+            for (unsigned int a = 0; a < nv; ++a)
+              for (unsigned int i = 0; i < dim; ++i)
+                h[i] += increment.local_element(nodes[a] * dim + i) *
+                        weights.gradient(a);
+            Tensor<2, dim> f = unit_symmetric_tensor<dim>();
+            f += h;
+            const double j = determinant(f);
+            if (!(j > 0 && std::isfinite(j)))
+              {
+                std::ostringstream s;
+                s << "the trial increment inverts particle "
+                  << particle.get_id() << " (det f = " << j << ")";
+                error = s.str();
+                ok    = false;
+                return;
+              }
+            kinematics.velocity_gradient = embed<dim>(h / dt, 0.);
+            kinematics.F =
+              embed<dim>(Tensor<2, dim>(f * load_matrix<dim>(prop + L::F)), 1.);
+            const SymmetricTensor<2, 3> stress_n =
+              load_stress(prop + L::stress);
+            SymmetricTensor<2, 3> sigma = stress_n;
+            history_scratch.assign(prop + L::history,
+                                   prop + L::history + material.n_history());
+            try
+              {
+                material.update_stress(kinematics,
+                                       sigma,
+                                       ArrayView<double>(history_scratch));
+              }
+            catch (const std::exception &e)
+              {
+                error = "the material of particle " +
+                        std::to_string(particle.get_id()) +
+                        " failed: " + e.what();
+                ok = false;
+                return;
+              }
+            const Tensor<2, dim> f_inv = invert(f);
+            Tensor<2, dim>       s; // in-plane Cauchy stress
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int k = 0; k < dim; ++k)
+                s[i][k] = sigma[i][k];
+            // First Piola-Kirchhoff stress with respect to the start of the
+            // step, P = j sigma f^-T: f_int,a = V_n P G_a.
+            const Tensor<2, dim> P = j * s * transpose(f_inv);
+            const double         V = prop[L::volume];
+            double               ext[dim];
+            state.bodies[b].body_force_on(particle.get_location(),
+                                          prop + L::X,
+                                          prop[L::mass],
+                                          t,
+                                          loaded[b],
+                                          ext);
+            for (unsigned int a = 0; a < nv; ++a)
+              {
+                const Tensor<1, dim> fa = V * (P * weights.gradient(a));
+                for (unsigned int i = 0; i < dim; ++i)
+                  {
+                    const double e = weights.value(a) * ext[i];
+                    cell_rhs(a * dim + i) += e - fa[i];
+                    f_int[nodes[a] * dim + i] += fa[i];
+                    f_ext[nodes[a] * dim + i] += e;
+                  }
+              }
+            double         traction[dim];
+            Tensor<1, dim> d_face;
+            if (state.bodies[b].has_traction() &&
+                state.bodies[b].traction_force_on(
+                  particle.get_location(), prop, t, traction, d_face))
+              {
+                double S_face[nv];
+                weights.face_values(d_face, S_face);
+                for (unsigned int a = 0; a < nv; ++a)
+                  for (unsigned int i = 0; i < dim; ++i)
+                    {
+                      cell_rhs(a * dim + i) += S_face[a] * traction[i];
+                      f_ext[nodes[a] * dim + i] += S_face[a] * traction[i];
+                    }
+              }
+            if (!with_matrix)
+              continue;
+
+            // A_iJkL = dP_iJ / dh_kL, from the material's d sigma / d h and
+            // d j = j f^-1_Lk, d f^-1 = -f^-1 dh f^-1.
+            Tensor<4, 3> tangent;
+            material.stress_tangent(
+              kinematics,
+              stress_n,
+              ArrayView<const double>(prop + L::history, material.n_history()),
+              tangent);
+            Tensor<4, dim> A;
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int l = 0; l < dim; ++l)
+                {
+                  Tensor<2, dim> ds, df_inv;
+                  for (unsigned int i = 0; i < dim; ++i)
+                    for (unsigned int m = 0; m < dim; ++m)
+                      {
+                        ds[i][m]     = tangent[i][m][k][l];
+                        df_inv[i][m] = -f_inv[i][k] * f_inv[l][m];
+                      }
+                  const double         dj = j * f_inv[l][k];
+                  const Tensor<2, dim> dP = dj * s * transpose(f_inv) +
+                                            j * ds * transpose(f_inv) +
+                                            j * s * transpose(df_inv);
+                  for (unsigned int i = 0; i < dim; ++i)
+                    for (unsigned int J = 0; J < dim; ++J)
+                      A[i][J][k][l] = dP[i][J];
+                }
+            for (unsigned int a = 0; a < nv; ++a)
+              {
+                const Tensor<1, dim> &Ga = weights.gradient(a);
+                for (unsigned int bb = 0; bb < nv; ++bb)
+                  {
+                    const Tensor<1, dim> &Gb = weights.gradient(bb);
+                    for (unsigned int i = 0; i < dim; ++i)
+                      for (unsigned int k = 0; k < dim; ++k)
+                        {
+                          double kab = 0;
+                          for (unsigned int J = 0; J < dim; ++J)
+                            for (unsigned int l = 0; l < dim; ++l)
+                              kab += Ga[J] * A[i][J][k][l] * Gb[l];
+                          cell_matrix(a * dim + i, bb * dim + k) += V * kab;
+                        }
+                  }
+              }
+          }
+        system.cell_indices(nodes, indices);
+        if (with_matrix)
+          system.add_cell(cell_matrix, cell_rhs, indices);
+        else
+          system.add_cell_rhs(cell_rhs, indices);
+      });
+    // Every rank takes part in the exchanges, whatever happened here.
+    system.finish_assembly(with_matrix);
+    internal_force.compress(VectorOperation::add);
+    external_force.compress(VectorOperation::add);
+    const bool all_ok = Utilities::MPI::min(ok ? 1 : 0, state.comm) == 1;
+    if (!all_ok && error.empty())
+      error = "a particle of another rank failed in the trial increment";
+    residual.norm = system.rhs_norm();
+    residual.reference =
+      std::max(internal_force.l2_norm(), external_force.l2_norm());
+    return all_ok;
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::commit(const double dt)
+  {
+    // The converged increment as a grid velocity u / dt: the explicit
+    // stress update then gives F = (I + h) F_n and the material's stress
+    // of exactly the converged state, and G2P moves the particles by
+    // sum_a N_a u_a (their velocity unchanged: the increment of the
+    // kinematics vector is zero).
+    using K          = KinematicsLayout<dim>;
+    const auto &grid = state.background;
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          state.kinematics.local_element(i * K::n_components + K::velocity +
+                                         c) =
+            increment.local_element(i * dim + c) / dt;
+          state.kinematics.local_element(i * K::n_components + K::increment +
+                                         c) = 0.;
+        }
+    {
+      TimerOutput::Scope timer(state.timer, "stress update");
+      const auto         r = ::mpm::update_stress(grid,
+                                          state.particle_handler,
+                                          state.bodies,
+                                          state.kinematics,
+                                          dt,
+                                          &state.volume_sums);
+      state.local_error.record(r.error);
+    }
+    {
+      TimerOutput::Scope timer(state.timer, "G2P");
+      state.local_error.record(transfer::grid_to_particle(
+        transfer::G2PContext<dim>{{grid, state.particle_handler, nullptr, 0},
+                                  state.kinematics,
+                                  dt,
+                                  1.,
+                                  nullptr}));
+    }
+    TimerOutput::Scope timer(state.timer, "position update");
+    state.relocate_moved_particles();
+  }
+
+  template class ImplicitIntegrator<1>;
+  template class ImplicitIntegrator<2>;
+  template class ImplicitIntegrator<3>;
+} // namespace mpm

@@ -1,0 +1,101 @@
+#include <mpm/integrators/implicit_parameters.h>
+#include <mpm/utilities/input_error.h>
+
+namespace mpm
+{
+  namespace Parameters
+  {
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+
+    void
+    ImplicitSolver::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Implicit solver");
+      prm.declare_entry("Residual tolerance",
+                        "1e-8",
+                        Double(0),
+                        "Newton has converged when the residual's norm "
+                        "(free degrees of freedom) is at most this times the "
+                        "larger of the norms of the external and of the "
+                        "internal force (the internal force includes the "
+                        "reactions), and the energy criterion holds.");
+      prm.declare_entry("Absolute residual tolerance",
+                        "1e-12",
+                        Double(0),
+                        "A residual norm [N] at or below this is converged "
+                        "whatever the forces (an unloaded step).");
+      prm.declare_entry("Energy tolerance",
+                        "1e-12",
+                        Double(0),
+                        "Energy criterion: |du . R| of the last increment at "
+                        "most this times that of the first iteration (an "
+                        "increment that is the first of its step leaves the "
+                        "residual criterion to decide).");
+      prm.declare_entry("Maximum Newton iterations",
+                        "20",
+                        Integer(1),
+                        "Iterations before the step is cut in half.");
+      prm.declare_entry("Line search",
+                        "true",
+                        Bool(),
+                        "Backtracking on the residual norm: the increment "
+                        "is halved (at most 6 times) until the residual "
+                        "decreases.");
+      prm.declare_entry("Maximum step cuts",
+                        "6",
+                        Integer(0),
+                        "How often a step whose Newton iteration fails may "
+                        "be halved before the run stops (each half grows "
+                        "back to the full step once Newton converges again).");
+      prm.declare_entry("Linear solver",
+                        "automatic",
+                        Selection("automatic|CG|GMRES|direct"),
+                        "CG or GMRES preconditioned by ML algebraic multigrid "
+                        "with the rigid-body modes as near-null space, or a "
+                        "direct solver (Amesos KLU, small problems). "
+                        "automatic: CG if every material has a symmetric "
+                        "tangent (hyperelastic), else GMRES.");
+      prm.declare_entry("Linear tolerance",
+                        "1e-10",
+                        Double(0),
+                        "Relative residual reduction of the iterative "
+                        "linear solver.");
+      prm.declare_entry("Maximum linear iterations",
+                        "2000",
+                        Integer(1),
+                        "Iterations before the linear solver fails (the "
+                        "step is then cut).");
+      prm.leave_subsection();
+    }
+
+    void
+    ImplicitSolver::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Implicit solver");
+      residual_tolerance = prm.get_double("Residual tolerance");
+      absolute_residual_tolerance =
+        prm.get_double("Absolute residual tolerance");
+      energy_tolerance      = prm.get_double("Energy tolerance");
+      max_iterations        = prm.get_integer("Maximum Newton iterations");
+      line_search           = prm.get_bool("Line search");
+      max_step_cuts         = prm.get_integer("Maximum step cuts");
+      const std::string s   = prm.get("Linear solver");
+      linear_solver         = s == "CG"     ? LinearSolver::cg :
+                              s == "GMRES"  ? LinearSolver::gmres :
+                              s == "direct" ? LinearSolver::direct :
+                                              LinearSolver::automatic;
+      linear_tolerance      = prm.get_double("Linear tolerance");
+      max_linear_iterations = prm.get_integer("Maximum linear iterations");
+      prm.leave_subsection();
+      if (!(residual_tolerance > 0) && !(absolute_residual_tolerance > 0))
+        throw InputError("Implicit solver: Residual tolerance and Absolute "
+                         "residual tolerance are both zero: Newton could "
+                         "never converge");
+      if (!(linear_tolerance > 0))
+        throw InputError("Implicit solver/Linear tolerance must be positive");
+    }
+  } // namespace Parameters
+} // namespace mpm

@@ -1,0 +1,304 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <mpm/integrators/nodal_linear_system.h>
+
+DEAL_II_DISABLE_EXTRA_DIAGNOSTICS
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+DEAL_II_ENABLE_EXTRA_DIAGNOSTICS
+
+#include <cmath>
+#include <sstream>
+
+namespace mpm
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::reinit(const BackgroundGrid<dim> &grid,
+                                 const MPI_Comm             communicator)
+  {
+    comm                  = communicator;
+    const auto  partition = grid.node_partitioner();
+    const Index n         = Index(partition->size()) * dim;
+    const auto  range     = partition->local_range();
+    owned                 = IndexSet(n);
+    owned.add_range(Index(dim) * range.first, Index(dim) * range.second);
+    owned.compress();
+    relevant = IndexSet(n);
+    relevant.add_indices(owned);
+    node_to_global.resize(grid.n_local_nodes());
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      {
+        node_to_global[i] = Index(dim) * partition->local_to_global(i);
+        relevant.add_range(node_to_global[i], node_to_global[i] + dim);
+      }
+    relevant.compress();
+
+    DynamicSparsityPattern dsp(relevant);
+    std::vector<Index>     indices;
+    for (const auto &cell : grid.owned_cells())
+      {
+        cell_indices(grid.nodes(cell), indices);
+        for (const Index row : indices)
+          dsp.add_entries(row, indices.begin(), indices.end());
+      }
+    SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+    matrix.reinit(owned, owned, dsp, comm);
+    rhs.reinit(owned, comm);
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::cell_indices(const unsigned int *nodes,
+                                       std::vector<Index> &indices) const
+  {
+    constexpr unsigned int nv = BackgroundGrid<dim>::n_vertices;
+    indices.resize(nv * dim);
+    for (unsigned int v = 0; v < nv; ++v)
+      for (unsigned int c = 0; c < dim; ++c)
+        indices[v * dim + c] = node_to_global[nodes[v]] + c;
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::build_constraints(const BackgroundGrid<dim> &grid,
+                                            const std::vector<char>   &active)
+  {
+    node_constraints.clear();
+    node_constraints.reinit(relevant);
+    std::vector<char> done(grid.n_local_nodes(), 0);
+    for (const auto &cell : grid.owned_cells())
+      for (unsigned int v = 0; v < BackgroundGrid<dim>::n_vertices; ++v)
+        {
+          const unsigned int i = grid.nodes(cell)[v];
+          if (done[i])
+            continue;
+          done[i]                  = 1;
+          const Index        first = node_to_global[i];
+          const unsigned int m     = grid.n_constrained_directions(i);
+          if (!active[i] || m == dim)
+            {
+              for (unsigned int c = 0; c < dim; ++c)
+                node_constraints.add_line(first + c);
+              continue;
+            }
+          if (m == 0)
+            continue;
+          // The node moves in the walls' tangent plane. One wall of normal
+          // n: the component along n's largest entry follows the others,
+          // n_k u_k = -sum_{d != k} n_d u_d. Two walls (3D): the node moves
+          // along t = n0 x n1, the other components follow the one along
+          // t's largest entry.
+          if (m == 1)
+            {
+              const Tensor<1, dim> &n = grid.constrained_direction(i, 0);
+              unsigned int          k = 0;
+              for (unsigned int d = 1; d < dim; ++d)
+                if (std::abs(n[d]) > std::abs(n[k]))
+                  k = d;
+              node_constraints.add_line(first + k);
+              for (unsigned int d = 0; d < dim; ++d)
+                if (d != k && n[d] != 0.)
+                  node_constraints.add_entry(first + k,
+                                             first + d,
+                                             -n[d] / n[k]);
+            }
+          else if constexpr (dim == 3)
+            {
+              const Tensor<1, dim> t =
+                cross_product_3d(grid.constrained_direction(i, 0),
+                                 grid.constrained_direction(i, 1));
+              unsigned int k = 0;
+              for (unsigned int d = 1; d < dim; ++d)
+                if (std::abs(t[d]) > std::abs(t[k]))
+                  k = d;
+              for (unsigned int d = 0; d < dim; ++d)
+                if (d != k)
+                  {
+                    node_constraints.add_line(first + d);
+                    if (t[d] != 0.)
+                      node_constraints.add_entry(first + d,
+                                                 first + k,
+                                                 t[d] / t[k]);
+                  }
+            }
+        }
+    node_constraints.close();
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::begin_assembly(const bool with_matrix)
+  {
+    if (with_matrix)
+      matrix = 0.;
+    rhs = 0.;
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::add_cell(const FullMatrix<double> &cell_matrix,
+                                   const Vector<double>     &cell_rhs,
+                                   const std::vector<Index> &indices)
+  {
+    node_constraints.distribute_local_to_global(
+      cell_matrix, cell_rhs, indices, matrix, rhs);
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::add_cell_rhs(const Vector<double>     &cell_rhs,
+                                       const std::vector<Index> &indices)
+  {
+    node_constraints.distribute_local_to_global(cell_rhs, indices, rhs);
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::finish_assembly(const bool with_matrix)
+  {
+    rhs.compress(VectorOperation::add);
+    if (!with_matrix)
+      return;
+    matrix.compress(VectorOperation::add);
+    // A constrained row that no cell with particles reached is empty: it
+    // gets the mean diagonal of the free rows (its solution is set by the
+    // constraint anyway).
+    double sum = 0, count = 0;
+    for (const Index k : owned)
+      if (!node_constraints.is_constrained(k))
+        {
+          sum += std::abs(matrix.diag_element(k));
+          ++count;
+        }
+    sum            = Utilities::MPI::sum(sum, comm);
+    count          = Utilities::MPI::sum(count, comm);
+    diagonal_scale = count > 0 && sum > 0 ? sum / count : 1.;
+    for (const Index k : owned)
+      if (node_constraints.is_constrained(k) && matrix.diag_element(k) == 0.)
+        matrix.set(k, k, diagonal_scale);
+    matrix.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  typename NodalLinearSystem<dim>::SolveResult
+  NodalLinearSystem<dim>::solve(
+    const BackgroundGrid<dim>                     &grid,
+    const Parameters::ImplicitSolver              &p,
+    const Parameters::ImplicitSolver::LinearSolver solver,
+    TrilinosWrappers::MPI::Vector                 &x)
+  {
+    using LinearSolver = Parameters::ImplicitSolver::LinearSolver;
+    SolveResult result;
+    x.reinit(owned, comm);
+    try
+      {
+        if (solver == LinearSolver::direct)
+          {
+            SolverControl                  control;
+            TrilinosWrappers::SolverDirect direct(
+              control,
+              TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                             "Amesos_Klu"));
+            direct.solve(matrix, x, rhs);
+            result.iterations = 1;
+          }
+        else
+          {
+            // ML with the rigid-body modes of the nodes as near-null space
+            // (translations, and rotations about the nodes' mean
+            // position): the aggregates then represent the elastic
+            // energy's kernel, and the iteration count stays nearly
+            // constant under refinement.
+            TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            data.elliptic              = true;
+            data.higher_order_elements = false;
+            data.smoother_sweeps       = 2;
+            data.aggregation_threshold = 1e-4;
+            Teuchos::ParameterList              ml;
+            std::unique_ptr<Epetra_MultiVector> unused;
+            data.set_parameters(ml, unused, matrix);
+            const int   n_modes = dim == 1 ? 1 : dim == 2 ? 3 : 6;
+            const auto &map     = matrix.trilinos_matrix().OperatorDomainMap();
+            Epetra_MultiVector modes(map, n_modes);
+            const unsigned int n_owned = grid.n_owned_nodes();
+            Point<dim>         centre;
+            for (unsigned int i = 0; i < n_owned; ++i)
+              centre += grid.node_position(i);
+            const double n_all = Utilities::MPI::sum(double(n_owned), comm);
+            for (unsigned int d = 0; d < dim; ++d)
+              centre[d] = Utilities::MPI::sum(centre[d], comm) / n_all;
+            for (unsigned int i = 0; i < n_owned; ++i)
+              {
+                const Tensor<1, dim> r = grid.node_position(i) - centre;
+                for (unsigned int c = 0; c < dim; ++c)
+                  modes[c][i * dim + c] = 1.;
+                if constexpr (dim == 2)
+                  {
+                    modes[2][2 * i]     = -r[1];
+                    modes[2][2 * i + 1] = r[0];
+                  }
+                if constexpr (dim == 3)
+                  {
+                    modes[3][3 * i + 1] = -r[2];
+                    modes[3][3 * i + 2] = r[1];
+                    modes[4][3 * i]     = r[2];
+                    modes[4][3 * i + 2] = -r[0];
+                    modes[5][3 * i]     = -r[1];
+                    modes[5][3 * i + 1] = r[0];
+                  }
+              }
+            ml.set("PDE equations", int(dim));
+            ml.set("null space: type", "pre-computed");
+            ml.set("null space: dimension", n_modes);
+            ml.set("null space: vectors", modes.Values());
+            TrilinosWrappers::PreconditionAMG amg;
+            amg.initialize(matrix, ml);
+
+            SolverControl control(p.max_linear_iterations,
+                                  p.linear_tolerance * rhs.l2_norm());
+            if (solver == LinearSolver::cg)
+              {
+                SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+                cg.solve(matrix, x, rhs, amg);
+              }
+            else
+              {
+                SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+                  control,
+                  SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                    100));
+                gmres.solve(matrix, x, rhs, amg);
+              }
+            result.iterations = control.last_step();
+          }
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        std::ostringstream s;
+        s << "the linear solver did not converge in " << e.last_step
+          << " iterations (residual " << e.last_residual << ")";
+        result.error      = s.str();
+        result.iterations = e.last_step;
+      }
+    catch (const std::exception &e)
+      {
+        result.error = std::string("the linear solver failed: ") + e.what();
+      }
+    node_constraints.distribute(x);
+    return result;
+  }
+
+  template class NodalLinearSystem<1>;
+  template class NodalLinearSystem<2>;
+  template class NodalLinearSystem<3>;
+} // namespace mpm
