@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Cook's membrane (prm/cooks_membrane.prm, plane stress, standard MPM) by
+# the quasi-static integrator in one load step, on grids h = 4, 2, 1, 0.5,
+# 0.25: the tip displacement ratios to the FE reference, Newton and linear
+# (AMG-preconditioned GMRES) iterations, and the wall time of the run.
+# Usage: scripts/cooks_membrane_implicit.sh [h values...] [RANKS=n]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mpm=${MPM:-$root/build/mpm}
+ranks=${RANKS:-1}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "| h | grid unknowns | corner ratio | mid ratio | Newton | linear per solve | wall [s] |"
+echo "|---|---|---|---|---|---|---|"
+for h in ${@:-4 2 1 0.5 0.25}; do
+  read -r nx ny nb <<< "$(python3 -c "print(round(52/$h), round(68/$h), round(48/$h))")"
+  cat > "$work/case.prm" <<PRM
+include $root/prm/cooks_membrane.prm
+set Constants = F=1e-3, uy_ref=25.19, uy_ref_mid=23.967, r_fit=$h, tr=250, E=1, rho=1
+subsection Grid
+  set Subdivisions = $nx, $ny
+end
+subsection Time stepping
+  set Integrator = quasi-static
+  set Time step control = fixed
+  set Time step = 250
+  set End time = 250
+  set Damping coefficient = 0
+end
+subsection Output
+  set Directory = $work/out
+  set Interval = 250
+  set Write vtu = false
+  set Write csv = false
+end
+subsection Bodies
+  subsection Body 0
+    set Subdivisions = $nb
+  end
+end
+PRM
+  start=$(date +%s.%N)
+  (cd "$work" && mpirun -np "$ranks" "$mpm" case.prm > log)
+  end=$(date +%s.%N)
+  python3 - "$work/out/statistics.txt" "$h" "$nx" "$ny" "$start" "$end" <<'PY'
+import sys
+rows = [l.split() for l in open(sys.argv[1])]
+head, last = rows[0], rows[-1]
+v = dict(zip(head, last))
+h, nx, ny = sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+newton = int(float(v["newton_iterations"]))
+linear = int(float(v["linear_iterations"]))
+print("| %s | %d | %.4f | %.4f | %d | %.1f | %.2f |" % (
+    h, 2 * (nx + 1) * (ny + 1), float(v["corner_ratio"]), float(v["mid_ratio"]),
+    newton, linear / max(newton, 1), float(sys.argv[6]) - float(sys.argv[5])))
+PY
+done
