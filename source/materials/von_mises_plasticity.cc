@@ -110,6 +110,47 @@ namespace mpm
 
 
 
+    bool
+    VonMisesPlasticity::stress_tangent(const PointKinematics         &point,
+                                       const SymmetricTensor<2, 3>   &stress_n,
+                                       const ArrayView<const double> &history_n,
+                                       Tensor<4, 3> &tangent) const
+    {
+      AssertDimension(history_n.size(), 1);
+      const KinematicAssumption k = kinematic_assumption();
+      elasticity::hypoelastic_tangent(constants, point, k, stress_n, tangent);
+      SymmetricTensor<2, 3> trial = stress_n;
+      elasticity::hypoelastic_update(constants, point, k, trial);
+      const double f = yield_function(trial, history_n[0]);
+      if (f <= 0)
+        return true;
+      const double                mu      = constants.mu();
+      const double                c       = 2 * mu + 2. / 3. * H;
+      const SymmetricTensor<2, 3> s       = dealii::deviator(trial);
+      const double                s_norm  = s.norm();
+      const SymmetricTensor<2, 3> n       = s / s_norm;
+      const double                d_gamma = f / c;
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int b = 0; b < 3; ++b)
+          {
+            SymmetricTensor<2, 3> d_trial;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = i; j < 3; ++j)
+                d_trial[i][j] = tangent[i][j][a][b];
+            const SymmetricTensor<2, 3> ds   = dealii::deviator(d_trial);
+            const double                n_ds = n * ds;
+            const SymmetricTensor<2, 3> d_sigma =
+              d_trial -
+              2 * mu * (n_ds / c * n + d_gamma / s_norm * (ds - n_ds * n));
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                tangent[i][j][a][b] = d_sigma[i][j];
+          }
+      return true;
+    }
+
+
+
     void
     VonMisesPlasticity::make_admissible(SymmetricTensor<2, 3>   &stress,
                                         const ArrayView<double> &history) const

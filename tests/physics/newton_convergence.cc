@@ -9,7 +9,11 @@
 // tangent cancel; the second case, Cook's membrane of neo-Hookean
 // material under a shear load that bends it by 5% of its length in four
 // load steps, needs them: every step converges with an order of at least
-// 1.8 (about 1 with the geometric terms left out).
+// 1.8 (about 1 with the geometric terms left out). The third case is
+// plastic: Cook's membrane of von Mises material (plane strain, linear
+// hardening) loaded until the clamp yields; every step that yields
+// (Newton needs 4 or more iterations there) converges with an order of at
+// least 1.8, through the algorithmic tangent of the radial return.
 #include <algorithm>
 #include <vector>
 
@@ -91,4 +95,52 @@ end)");
   mpm_test::report(slowest >= 1.8,
                    "Cook's membrane, neo-Hookean: smallest order >= 1.8",
                    slowest);
+
+  mpm_test::Case<2> plastic("include " SOURCE_DIR
+                            R"(/../../prm/cooks_membrane.prm
+set Kinematic assumption = plane strain
+set Constants = F=1e-3, uy_ref=25.19, uy_ref_mid=23.967, r_fit=4, tr=2, E=1, rho=1
+subsection Time stepping
+  set Integrator = quasi-static
+  set Time step control = fixed
+  set Time step = 0.125
+  set Damping coefficient = 0
+end
+subsection Output
+  set Directory = results
+end
+subsection Bodies
+  subsection Body 0
+    set Traction = 0; F/16*min(t/tr, 1)
+    subsection Material
+      set Model = von Mises plasticity
+      subsection Von Mises plasticity
+        set Young's modulus = E
+        set Poisson's ratio = 0.3
+        set Yield stress = 2e-4
+        set Hardening modulus = 0.01
+      end
+    end
+  end
+end)");
+  unsigned int      yielding_steps  = 0;
+  double            slowest_plastic = 1e300;
+  for (unsigned int step = 0; step < 16; ++step)
+    {
+      plastic.simulator->do_time_step(0.125);
+      const auto v = plastic.simulator->integrator_values();
+      if (v[column("newton_iterations")] >= 4)
+        {
+          ++yielding_steps;
+          slowest_plastic =
+            std::min(slowest_plastic, v[column("convergence_rate")]);
+        }
+    }
+  mpm_test::report(yielding_steps >= 2,
+                   "Cook's membrane, von Mises: it yields",
+                   yielding_steps);
+  mpm_test::report(slowest_plastic >= 1.8,
+                   "Cook's membrane, von Mises: smallest order of a "
+                   "yielding step >= 1.8",
+                   slowest_plastic);
 }

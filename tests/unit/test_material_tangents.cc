@@ -31,12 +31,19 @@ namespace
 {
   template <typename T>
   T
-  make_model(const KinematicAssumption k, const double nu = 0.3)
+  make_model(const KinematicAssumption k,
+             const double              nu           = 0.3,
+             const std::string        &yield_stress = "")
   {
     dealii::ParameterHandler prm;
     T::declare_parameters(prm);
     prm.set("Young's modulus", "1e6");
     prm.set("Poisson's ratio", std::to_string(nu));
+    if (!yield_stress.empty())
+      {
+        prm.set("Yield stress", yield_stress);
+        prm.set("Hardening modulus", "2e5");
+      }
     T model;
     model.set_common(1000, k);
     model.parse_parameters(prm);
@@ -69,7 +76,9 @@ namespace
 
   /// max |tangent - central difference| / max |tangent|.
   double
-  tangent_error(const Material &m, const KinematicAssumption kind)
+  tangent_error(const Material           &m,
+                const KinematicAssumption kind,
+                const double              alpha_n = 0)
   {
     const unsigned int n = varying(kind);
     Tensor<2, 3>       h, F_n = dealii::unit_symmetric_tensor<3>();
@@ -92,7 +101,7 @@ namespace
         stress_n[i][j] = 1e4 * (1. + i + 2. * j) * (i == j ? 1. : -0.5);
     if (kind == KinematicAssumption::uniaxial_stress)
       stress_n = SymmetricTensor<2, 3>(), stress_n[0][0] = 2e4;
-    const std::vector<double> history(m.n_history());
+    const std::vector<double> history(m.n_history(), alpha_n);
 
     Tensor<4, 3> tangent;
     BOOST_REQUIRE(m.stress_tangent(
@@ -146,6 +155,36 @@ BOOST_AUTO_TEST_CASE(neo_hookean)
                        KinematicAssumption::uniaxial_strain})
     for (const double nu : {0., 0.3, 0.4999})
       BOOST_TEST(tangent_error(make_model<NeoHookean>(k, nu), k) < 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(von_mises_elastic_and_plastic_steps)
+{
+  // Yield stress 1e9: the step stays elastic. 1e4: the trial stress
+  // (about 4e4) is far outside the yield surface, the return is plastic,
+  // with a plastic strain 0.01 from before and linear hardening.
+  for (const auto k : {KinematicAssumption::three_dimensional,
+                       KinematicAssumption::plane_strain,
+                       KinematicAssumption::uniaxial_strain})
+    for (const char *yield : {"1e9", "1e4"})
+      for (const double nu : {0., 0.3, 0.49})
+        BOOST_TEST(tangent_error(make_model<VonMisesPlasticity>(k, nu, yield),
+                                 k,
+                                 0.01) < 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(no_tangent_means_refused)
+{
+  // The fluid has no tangent yet: the implicit integrator refuses it.
+  dealii::ParameterHandler prm;
+  NewtonianFluid::declare_parameters(prm);
+  NewtonianFluid fluid;
+  fluid.set_common(1000, KinematicAssumption::plane_strain);
+  fluid.parse_parameters(prm);
+  Tensor<4, 3> tangent;
+  BOOST_TEST(!fluid.stress_tangent(PointKinematics(),
+                                   SymmetricTensor<2, 3>(),
+                                   ArrayView<const double>(),
+                                   tangent));
 }
 
 BOOST_AUTO_TEST_CASE(symmetry_is_declared_only_for_hyperelastic_models)

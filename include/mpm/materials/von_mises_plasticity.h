@@ -56,6 +56,17 @@ namespace mpm
       wave_speed(const Tensor<2, 3> &F) const override;
 
       /// Radial return of a filtered stress, with the hardening it implies.
+      /// The algorithmic (consistent) tangent of the radial return:
+      /// d sigma = M : d sigma_trial with
+      /// M = I - (2 mu / (2 mu + 2H/3)) n x n
+      ///       - (2 mu d_gamma / |s_trial|) (I_dev - n x n),
+      /// and d sigma_trial the hypoelastic tangent.
+      bool
+      stress_tangent(const PointKinematics         &kinematics,
+                     const SymmetricTensor<2, 3>   &stress_n,
+                     const ArrayView<const double> &history_n,
+                     Tensor<4, 3>                  &tangent) const override;
+
       void
       make_admissible(SymmetricTensor<2, 3>   &stress,
                       const ArrayView<double> &history) const override;
