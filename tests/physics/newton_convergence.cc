@@ -19,6 +19,48 @@
 
 #include "../tests.h"
 
+namespace
+{
+  /// Cook's membrane in plane strain, quasi-static, under the shear load
+  /// @p load ramped linearly over @p ramp, in steps of @p step, of the
+  /// material given by the entries @p material of its Material subsection.
+  std::string
+  cooks_membrane(const std::string &load,
+                 const std::string &ramp,
+                 const std::string &step,
+                 const std::string &material)
+  {
+    return "include " SOURCE_DIR "/../../prm/cooks_membrane.prm\n"
+           "set Kinematic assumption = plane strain\n"
+           "set Constants = " +
+           load +
+           ", uy_ref=25.19, uy_ref_mid=23.967, "
+           "r_fit=4, tr=" +
+           ramp +
+           ", E=1, rho=1\n"
+           "subsection Time stepping\n"
+           "  set Integrator = quasi-static\n"
+           "  set Time step control = fixed\n"
+           "  set Time step = " +
+           step +
+           "\n"
+           "  set Damping coefficient = 0\n"
+           "end\n"
+           "subsection Output\n"
+           "  set Directory = results\n"
+           "end\n"
+           "subsection Bodies\n"
+           "  subsection Body 0\n"
+           "    set Traction = 0; F/16*min(t/tr, 1)\n"
+           "    subsection Material" +
+           material +
+           "\n"
+           "    end\n"
+           "  end\n"
+           "end\n";
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
@@ -59,31 +101,12 @@ end)");
                         stress_error,
                         0.05);
 
-  mpm_test::Case<2> cook("include " SOURCE_DIR
-                         R"(/../../prm/cooks_membrane.prm
-set Kinematic assumption = plane strain
-set Constants = F=0.1, uy_ref=25.19, uy_ref_mid=23.967, r_fit=4, tr=1, E=1, rho=1
-subsection Time stepping
-  set Integrator = quasi-static
-  set Time step control = fixed
-  set Time step = 0.1
-  set Damping coefficient = 0
-end
-subsection Output
-  set Directory = results
-end
-subsection Bodies
-  subsection Body 0
-    set Traction = 0; F/16*min(t/tr, 1)
-    subsection Material
+  mpm_test::Case<2> cook(cooks_membrane("F=0.1", "1", "0.1", R"(
       set Model = neo-Hookean
       subsection Neo-Hookean
         set Young's modulus = E
         set Poisson's ratio = 0.3
-      end
-    end
-  end
-end)");
+      end)"));
   double            slowest = 1e300;
   for (unsigned int step = 0; step < 4; ++step)
     {
@@ -96,33 +119,14 @@ end)");
                    "Cook's membrane, neo-Hookean: smallest order >= 1.8",
                    slowest);
 
-  mpm_test::Case<2> plastic("include " SOURCE_DIR
-                            R"(/../../prm/cooks_membrane.prm
-set Kinematic assumption = plane strain
-set Constants = F=1e-3, uy_ref=25.19, uy_ref_mid=23.967, r_fit=4, tr=2, E=1, rho=1
-subsection Time stepping
-  set Integrator = quasi-static
-  set Time step control = fixed
-  set Time step = 0.125
-  set Damping coefficient = 0
-end
-subsection Output
-  set Directory = results
-end
-subsection Bodies
-  subsection Body 0
-    set Traction = 0; F/16*min(t/tr, 1)
-    subsection Material
+  mpm_test::Case<2> plastic(cooks_membrane("F=1e-3", "2", "0.125", R"(
       set Model = von Mises plasticity
       subsection Von Mises plasticity
         set Young's modulus = E
         set Poisson's ratio = 0.3
         set Yield stress = 2e-4
         set Hardening modulus = 0.01
-      end
-    end
-  end
-end)");
+      end)"));
   unsigned int      yielding_steps  = 0;
   double            slowest_plastic = 1e300;
   for (unsigned int step = 0; step < 16; ++step)
