@@ -236,15 +236,21 @@ namespace mpm
             << " particles per body cell\n";
     pcout << "  particles: " << state.particle_handler.n_global_particles()
           << '\n'
-          << "  scheme " << scheme_name(p.time.scheme) << ", FLIP fraction "
-          << p.time.flip_fraction << ", end time " << p.time.end_time << '\n'
-          << "  time step: "
-          << (p.time.step_control ==
-                  Parameters::TimeStepping::StepControl::fixed ?
-                "fixed " + Utilities::to_string(p.time.time_step) :
-                "CFL " + Utilities::to_string(p.time.cfl_number))
-          << " (stability limit now " << stable_time_step() << ")\n"
-          << "  output: " << p.output.directory << "/ every "
+          << "  integrator " << integrator->name();
+    if (p.time.integrator ==
+        Parameters::TimeStepping::Integrator::explicit_dynamics)
+      pcout << ", scheme " << scheme_name(p.time.scheme) << ", FLIP fraction "
+            << p.time.flip_fraction << ", end time " << p.time.end_time << '\n'
+            << "  time step: "
+            << (p.time.step_control ==
+                    Parameters::TimeStepping::StepControl::fixed ?
+                  "fixed " + Utilities::to_string(p.time.time_step) :
+                  "CFL " + Utilities::to_string(p.time.cfl_number))
+            << " (stability limit now " << stable_time_step() << ")\n";
+    else
+      pcout << ", end time " << p.time.end_time << '\n'
+            << "  load step: " << p.time.time_step << '\n';
+    pcout << "  output: " << p.output.directory << "/ every "
           << p.output.interval << " s" << std::endl;
     if (resumed())
       pcout << "  resumed from the checkpoint " << resume_folder << " at step "
