@@ -235,13 +235,14 @@ namespace mpm
     const auto                    relative     = [](const Residual &r) {
       return r.reference > 0 ? r.norm / r.reference : r.norm;
     };
+    const auto small_residual = [&p](const Residual &r) {
+      return r.norm <= p.residual_tolerance * r.reference ||
+             r.norm <= p.absolute_residual_tolerance;
+    };
     result.residuals.push_back(relative(r));
     for (;;)
       {
-        const bool small_residual =
-          r.norm <= p.residual_tolerance * r.reference ||
-          r.norm <= p.absolute_residual_tolerance;
-        if (small_residual && result.iterations == 0)
+        if (small_residual(r) && result.iterations == 0)
           {
             result.converged = true;
             return result;
@@ -288,11 +289,9 @@ namespace mpm
         result.residuals.push_back(relative(r));
         // The energy criterion compares this increment with the first; an
         // increment that is the first leaves the residual to decide.
-        const bool small_energy = result.iterations == 1 ||
-                                  energy <= p.energy_tolerance * first_energy;
-        if ((r.norm <= p.residual_tolerance * r.reference ||
-             r.norm <= p.absolute_residual_tolerance) &&
-            small_energy)
+        const bool small_energy =
+          result.iterations == 1 || energy <= p.energy_tolerance * first_energy;
+        if (small_residual(r) && small_energy)
           {
             result.converged = true;
             return result;
