@@ -6,7 +6,6 @@
 #include <mpm/integrators/implicit_integrator.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
-#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/shape_functions/cell_q1_weights.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
@@ -24,6 +23,7 @@ namespace mpm
   template <int dim>
   ImplicitIntegrator<dim>::ImplicitIntegrator(SimulationState<dim> &s)
     : TimeIntegrator<dim>(s)
+    , smoothing(std::make_unique<Smoothing>(s.bodies))
   {
     using LinearSolver = Parameters::ImplicitSolver::LinearSolver;
     const auto &p      = state.params;
@@ -52,7 +52,10 @@ namespace mpm
           throw InputError(section + "/Material/Model = " + material.name() +
                            " has no tangent for Time stepping/Integrator = "
                            "quasi-static; use the explicit integrator");
-        symmetric = symmetric && material.has_symmetric_tangent();
+        // F-bar and the rate form's B-bar couple a cell's particles
+        // without symmetry
+        symmetric = symmetric && material.has_symmetric_tangent() &&
+                    !smoothing->smooths(b);
       }
     linear_solver = p.implicit.linear_solver;
     if (linear_solver == LinearSolver::automatic)
@@ -312,6 +315,37 @@ namespace mpm
     increment.update_ghost_values();
   }
 
+  namespace
+  {
+    /**
+     * The change of P = j sigma f^-T (in-plane) by a change @p dh of the
+     * step's displacement gradient that changes the material's increment
+     * by @p dh_eff (the same without volumetric smoothing): the geometric
+     * terms from d j = j tr(f^-1 dh) and d f^-1 = -f^-1 dh f^-1, the
+     * material's through its tangent @p T = d sigma / d h.
+     */
+    template <int dim>
+    Tensor<2, dim>
+    first_piola_change(const Tensor<2, dim> &s,
+                       const double          j,
+                       const Tensor<2, dim> &f_inv,
+                       const Tensor<4, 3>   &T,
+                       const Tensor<2, dim> &dh,
+                       const Tensor<2, dim> &dh_eff)
+    {
+      Tensor<2, dim> ds;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int m = 0; m < dim; ++m)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              ds[i][m] += T[i][m][k][l] * dh_eff[k][l];
+      const Tensor<2, dim> f_inv_T = transpose(f_inv);
+      const Tensor<2, dim> d_f_inv = -f_inv * dh * f_inv;
+      return (j * trace(f_inv * dh)) * s * f_inv_T + j * ds * f_inv_T +
+             j * s * transpose(d_f_inv);
+    }
+  } // namespace
+
   template <int dim>
   bool
   ImplicitIntegrator<dim>::assemble(const double t,
@@ -322,6 +356,7 @@ namespace mpm
   {
     TimerOutput::Scope timer(state.timer, "implicit assembly");
     using L                     = ParticleLayout<dim>;
+    using Point                 = typename Smoothing::Point;
     constexpr unsigned int nv   = shape_functions::n_q1<dim>;
     constexpr unsigned int n    = nv * dim;
     const auto            &grid = state.background;
@@ -339,9 +374,10 @@ namespace mpm
     FullMatrix<double>                   cell_matrix(n, n);
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> indices;
-    materials::PointKinematics           kinematics;
-    kinematics.dt = dt;
-    bool ok       = true;
+    materials::PointKinematics           kinematics, tangent_kinematics;
+    kinematics.dt         = dt;
+    tangent_kinematics.dt = dt;
+    bool ok               = true;
 
     for_each_cell_with_particles(
       grid, state.particle_handler, [&](const auto &cell, const auto &pic) {
@@ -349,37 +385,69 @@ namespace mpm
           return;
         weights.begin_cell(cell);
         const unsigned int *nodes = grid.nodes(cell);
-        cell_matrix               = 0.;
-        cell_rhs                  = 0.;
+
+        // The trial kinematics of the cell's particles: h = sum_a u_a (x)
+        // G_a, the step's displacement gradient with respect to the
+        // configuration at the start of the step; and the cell sums of
+        // the volumetric smoothing.
+        points.clear();
+        smoothing->reset();
         for (const auto &particle : pic)
           {
             const double *prop = particle.get_properties().data();
             weights.evaluate(particle, true, error);
-            const unsigned int b = static_cast<unsigned int>(prop[L::body]);
-            const auto        &material = *state.bodies[b].material;
-
-            // h = sum_a u_a (x) G_a: the step's displacement gradient with
-            // respect to the configuration at the start of the step.
-            Tensor<2, dim> h;
+            Point q;
+            q.body = static_cast<unsigned int>(prop[L::body]);
             for (unsigned int a = 0; a < nv; ++a)
               for (unsigned int i = 0; i < dim; ++i)
-                h[i] += increment.local_element(nodes[a] * dim + i) *
-                        weights.gradient(a);
-            Tensor<2, dim> f = unit_symmetric_tensor<dim>();
-            f += h;
-            const double j = determinant(f);
-            if (!(j > 0 && std::isfinite(j)))
+                q.h[i] += increment.local_element(nodes[a] * dim + i) *
+                          weights.gradient(a);
+            q.f = unit_symmetric_tensor<dim>();
+            q.f += q.h;
+            q.j = determinant(q.f);
+            if (!(q.j > 0 && std::isfinite(q.j)))
               {
                 std::ostringstream s;
                 s << "the trial increment inverts particle "
-                  << particle.get_id() << " (det f = " << j << ")";
+                  << particle.get_id() << " (det f = " << q.j << ")";
                 error = s.str();
                 ok    = false;
                 return;
               }
-            kinematics.velocity_gradient = embed<dim>(h / dt, 0.);
-            kinematics.F =
-              embed<dim>(Tensor<2, dim>(f * load_matrix<dim>(prop + L::F)), 1.);
+            q.f_inv = invert(q.f);
+            q.F     = q.f * load_matrix<dim>(prop + L::F);
+            q.V_n   = prop[L::volume];
+            q.V0    = prop[L::volume0];
+            q.G     = &weights.gradient(0);
+            if (smoothing->smooths(q.body))
+              smoothing->add(q);
+            points.push_back(q);
+          }
+
+        cell_matrix        = 0.;
+        cell_rhs           = 0.;
+        unsigned int index = 0;
+        for (const auto &particle : pic)
+          {
+            const double *prop = particle.get_properties().data();
+            weights.evaluate(particle, true, error);
+            Point &q                    = points[index++];
+            q.G                         = &weights.gradient(0);
+            const unsigned int b        = q.body;
+            const auto        &material = *state.bodies[b].material;
+            const bool         smoothed = smoothing->smooths(b);
+            const bool total = material.stress_from_deformation_gradient();
+
+            // What the material sees (as in the explicit stress update),
+            // and the increment its tangent is the derivative by.
+            Tensor<2, dim> h_rate = q.h, F = q.F, h_eff = q.h;
+            if (smoothed)
+              smoothing->material_increment(q, total, h_rate, F, h_eff);
+            kinematics.velocity_gradient         = embed<dim>(h_rate / dt, 0.);
+            kinematics.F                         = embed<dim>(F, 1.);
+            tangent_kinematics.velocity_gradient = embed<dim>(h_eff / dt, 0.);
+            tangent_kinematics.F                 = kinematics.F;
+
             const SymmetricTensor<2, 3> stress_n =
               load_stress(prop + L::stress);
             SymmetricTensor<2, 3> sigma = stress_n;
@@ -399,15 +467,13 @@ namespace mpm
                 ok = false;
                 return;
               }
-            const Tensor<2, dim> f_inv = invert(f);
-            Tensor<2, dim>       s; // in-plane Cauchy stress
+            Tensor<2, dim> s; // in-plane Cauchy stress
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int k = 0; k < dim; ++k)
                 s[i][k] = sigma[i][k];
             // First Piola-Kirchhoff stress with respect to the start of the
             // step, P = j sigma f^-T: f_int,a = V_n P G_a.
-            const Tensor<2, dim> P = j * s * transpose(f_inv);
-            const double         V = prop[L::volume];
+            const Tensor<2, dim> P = q.j * s * transpose(q.f_inv);
             double               ext[dim];
             state.bodies[b].body_force_on(particle.get_location(),
                                           prop + L::X,
@@ -417,7 +483,7 @@ namespace mpm
                                           ext);
             for (unsigned int a = 0; a < nv; ++a)
               {
-                const Tensor<1, dim> fa = V * (P * weights.gradient(a));
+                const Tensor<1, dim> fa = q.V_n * (P * weights.gradient(a));
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const double e = weights.value(a) * ext[i];
@@ -444,50 +510,34 @@ namespace mpm
             if (!with_matrix)
               continue;
 
-            // A_iJkL = dP_iJ / dh_kL, from the material's d sigma / d h and
-            // d j = j f^-1_Lk, d f^-1 = -f^-1 dh f^-1.
-            Tensor<4, 3> tangent;
+            // K_ai,bk = V_n (dP / du_bk) G_a. With smoothing, u_bk also
+            // changes the other particles' share of the cell average.
+            Tensor<4, 3> T;
             material.stress_tangent(
-              kinematics,
+              tangent_kinematics,
               stress_n,
               ArrayView<const double>(prop + L::history, material.n_history()),
-              tangent);
-            Tensor<4, dim> A;
-            for (unsigned int k = 0; k < dim; ++k)
-              for (unsigned int l = 0; l < dim; ++l)
+              T);
+            for (unsigned int bb = 0; bb < nv; ++bb)
+              for (unsigned int k = 0; k < dim; ++k)
                 {
-                  Tensor<2, dim> ds, df_inv;
-                  for (unsigned int i = 0; i < dim; ++i)
-                    for (unsigned int m = 0; m < dim; ++m)
-                      {
-                        ds[i][m]     = tangent[i][m][k][l];
-                        df_inv[i][m] = -f_inv[i][k] * f_inv[l][m];
-                      }
-                  const double         dj = j * f_inv[l][k];
-                  const Tensor<2, dim> dP = dj * s * transpose(f_inv) +
-                                            j * ds * transpose(f_inv) +
-                                            j * s * transpose(df_inv);
-                  for (unsigned int i = 0; i < dim; ++i)
-                    for (unsigned int J = 0; J < dim; ++J)
-                      A[i][J][k][l] = dP[i][J];
+                  Tensor<2, dim> dh;
+                  dh[k]                   = weights.gradient(bb);
+                  const Tensor<2, dim> dP = first_piola_change(
+                    s,
+                    q.j,
+                    q.f_inv,
+                    T,
+                    dh,
+                    smoothed ? smoothing->derivative(q, total, bb, k) : dh);
+                  for (unsigned int a = 0; a < nv; ++a)
+                    {
+                      const Tensor<1, dim> column =
+                        q.V_n * (dP * weights.gradient(a));
+                      for (unsigned int i = 0; i < dim; ++i)
+                        cell_matrix(a * dim + i, bb * dim + k) += column[i];
+                    }
                 }
-            for (unsigned int a = 0; a < nv; ++a)
-              {
-                const Tensor<1, dim> &Ga = weights.gradient(a);
-                for (unsigned int bb = 0; bb < nv; ++bb)
-                  {
-                    const Tensor<1, dim> &Gb = weights.gradient(bb);
-                    for (unsigned int i = 0; i < dim; ++i)
-                      for (unsigned int k = 0; k < dim; ++k)
-                        {
-                          double kab = 0;
-                          for (unsigned int J = 0; J < dim; ++J)
-                            for (unsigned int l = 0; l < dim; ++l)
-                              kab += Ga[J] * A[i][J][k][l] * Gb[l];
-                          cell_matrix(a * dim + i, bb * dim + k) += V * kab;
-                        }
-                  }
-              }
           }
         system.cell_indices(nodes, indices);
         if (with_matrix)

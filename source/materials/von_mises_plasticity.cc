@@ -121,15 +121,20 @@ namespace mpm
       elasticity::hypoelastic_tangent(constants, point, k, stress_n, tangent);
       SymmetricTensor<2, 3> trial = stress_n;
       elasticity::hypoelastic_update(constants, point, k, trial);
-      const double f = yield_function(trial, history_n[0]);
-      if (f <= 0)
+      // A trial state on the yield surface to round-off (a particle that
+      // yielded in the last step, at the first iteration of the next one)
+      // takes the elastoplastic tangent: otherwise round-off would pick
+      // the tangent, and with it Newton's path.
+      const double f      = yield_function(trial, history_n[0]);
+      const double radius = std::sqrt(2. / 3.) * (sigma_y + H * history_n[0]);
+      if (f <= -1e-10 * radius)
         return true;
       const double                mu      = constants.mu();
       const double                c       = 2 * mu + 2. / 3. * H;
       const SymmetricTensor<2, 3> s       = dealii::deviator(trial);
       const double                s_norm  = s.norm();
       const SymmetricTensor<2, 3> n       = s / s_norm;
-      const double                d_gamma = f / c;
+      const double                d_gamma = std::max(f, 0.) / c;
       for (unsigned int a = 0; a < 3; ++a)
         for (unsigned int b = 0; b < 3; ++b)
           {

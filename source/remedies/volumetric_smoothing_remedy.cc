@@ -8,7 +8,8 @@ namespace mpm
     namespace
     {
       /// `Volumetric smoothing = cell` or `node`: no entries of its own,
-      /// and it works with every material, family and scheme.
+      /// and it works with every material, family and scheme of the
+      /// explicit step.
       template <VolumeAverage where>
       class VolumetricSmoothingRemedy : public Remedy,
                                         public VolumetricSmoothingSettings
@@ -27,14 +28,14 @@ namespace mpm
         parse_parameters(dealii::ParameterHandler &) override
         {}
 
+        /// The cell average is linearized for the implicit step
+        /// (LinearizedCellSmoothing); the node average, which couples
+        /// neighbouring cells, is not.
         void
         check(const Context &context) const override
         {
-          require_explicit_integrator(context,
-                                      std::string("Volumetric smoothing = ") +
-                                        (average == VolumeAverage::cell ?
-                                           "cell" :
-                                           "node"));
+          if (average == VolumeAverage::node)
+            require_explicit_integrator(context, "Volumetric smoothing = node");
         }
       };
 

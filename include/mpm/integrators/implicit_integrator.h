@@ -4,6 +4,7 @@
 
 #include <mpm/integrators/nodal_linear_system.h>
 #include <mpm/integrators/time_integrator.h>
+#include <mpm/remedies/linearized_cell_smoothing.h>
 
 #include <memory>
 #include <string>
@@ -106,5 +107,9 @@ namespace mpm
     NewtonResult        last;   ///< of the last sub-step
     unsigned int        last_cuts = 0;
     std::vector<double> history_scratch;
+    using Smoothing = remedies::LinearizedCellSmoothing<dim>;
+    /// `Volumetric smoothing = cell` of the trial increments
+    std::unique_ptr<Smoothing>             smoothing;
+    std::vector<typename Smoothing::Point> points; ///< of one cell
   };
 } // namespace mpm

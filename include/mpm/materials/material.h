@@ -121,6 +121,18 @@ namespace mpm
         return false;
       }
 
+      /**
+       * Whether the stress is a function of F (hyperelastic models, an
+       * equation of state) rather than integrated from the rate L. The
+       * implicit step linearizes `Volumetric smoothing` accordingly: as
+       * F-bar for these, as a B-bar of the rate for the others.
+       */
+      virtual bool
+      stress_from_deformation_gradient() const
+      {
+        return false;
+      }
+
       /// Stored strain energy per unit reference volume.
       virtual double
       strain_energy_density(const SymmetricTensor<2, 3>   &stress,

@@ -61,6 +61,12 @@ namespace mpm
         return true;
       }
 
+      bool
+      stress_from_deformation_gradient() const override
+      {
+        return true;
+      }
+
       SymmetricTensor<2, 3>
       cauchy_stress(const Tensor<2, 3> &F) const;
 

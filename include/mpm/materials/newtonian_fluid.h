@@ -66,6 +66,12 @@ namespace mpm
         return true;
       }
 
+      bool
+      stress_from_deformation_gradient() const override
+      {
+        return true;
+      }
+
       /// Pressure p(J) from the equation of state.
       double
       pressure(const double J) const;

@@ -1,0 +1,126 @@
+#include <mpm/remedies/linearized_cell_smoothing.h>
+#include <mpm/remedies/volumetric_smoothing.h>
+
+namespace mpm
+{
+  namespace remedies
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      template <int dim>
+      std::vector<char>
+      cell_averages(const std::vector<Body<dim>> &bodies)
+      {
+        const VolumetricSmoothing<dim> smoothing(bodies);
+        std::vector<char>              cell(bodies.size());
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          cell[b] = smoothing.average(b) == VolumeAverage::cell;
+        return cell;
+      }
+    } // namespace
+
+    template <int dim>
+    LinearizedCellSmoothing<dim>::LinearizedCellSmoothing(
+      const std::vector<Body<dim>> &bodies)
+      : LinearizedCellSmoothing(cell_averages(bodies))
+    {}
+
+    template <int dim>
+    LinearizedCellSmoothing<dim>::LinearizedCellSmoothing(
+      const std::vector<char> &cell)
+      : cell_average(cell)
+      , sums(cell.size())
+    {
+      for (const char c : cell_average)
+        any_body = any_body || c;
+    }
+
+    template <int dim>
+    void
+    LinearizedCellSmoothing<dim>::reset()
+    {
+      std::fill(sums.begin(), sums.end(), Sums());
+    }
+
+    template <int dim>
+    void
+    LinearizedCellSmoothing<dim>::add(const Point &p)
+    {
+      Sums        &s = sums[p.body];
+      const double V = determinant(p.F) * p.V0;
+      s.V0 += p.V0;
+      s.V += V;
+      s.V_n += p.V_n;
+      s.V_n_tr_h += p.V_n * trace(p.h);
+      const Tensor<2, dim> f_inv_T = transpose(p.f_inv);
+      for (unsigned int b = 0; b < nv; ++b)
+        {
+          s.V_n_G[b] += p.V_n * p.G[b];
+          s.V_g[b] += V * (f_inv_T * p.G[b]);
+        }
+    }
+
+    template <int dim>
+    void
+    LinearizedCellSmoothing<dim>::material_increment(
+      const Point    &p,
+      const bool      total,
+      Tensor<2, dim> &h_rate,
+      Tensor<2, dim> &F_bar,
+      Tensor<2, dim> &h_eff) const
+    {
+      const Sums  &s     = sums[p.body];
+      const double J     = determinant(p.F);
+      const double alpha = std::pow(s.V / s.V0 / J, 1. / dim);
+      F_bar              = alpha * p.F;
+      h_rate             = p.h;
+      const double l     = (s.V_n_tr_h / s.V_n - trace(p.h)) / dim;
+      for (unsigned int d = 0; d < dim; ++d)
+        h_rate[d][d] += l;
+      if (!total)
+        {
+          h_eff = h_rate;
+          return;
+        }
+      h_eff = alpha * p.f;
+      for (unsigned int d = 0; d < dim; ++d)
+        h_eff[d][d] -= 1.;
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    LinearizedCellSmoothing<dim>::derivative(const Point       &p,
+                                             const bool         total,
+                                             const unsigned int b,
+                                             const unsigned int k) const
+    {
+      const Sums    &s = sums[p.body];
+      Tensor<2, dim> d;
+      if (!total)
+        {
+          // d h_bar = e_k (x) G_b + (G_bar_bk - G_bk)/d I
+          d[k]           = p.G[b];
+          const double v = (s.V_n_G[b][k] / s.V_n - p.G[b][k]) / dim;
+          for (unsigned int i = 0; i < dim; ++i)
+            d[i][i] += v;
+          return d;
+        }
+      // d(alpha f) = alpha e_k (x) G_b + f d alpha, with
+      // d alpha / alpha = (d J_bar / J_bar - d J / J) / d,
+      // d J / J = (f^-T G_b)_k and d J_bar / J_bar = sum V f^-T G_b / sum V.
+      const double J       = determinant(p.F);
+      const double alpha   = std::pow(s.V / s.V0 / J, 1. / dim);
+      const double dJ_J    = (transpose(p.f_inv) * p.G[b])[k];
+      const double d_alpha = alpha * (s.V_g[b][k] / s.V - dJ_J) / dim;
+      d                    = d_alpha * p.f;
+      d[k] += alpha * p.G[b];
+      return d;
+    }
+
+    template class LinearizedCellSmoothing<1>;
+    template class LinearizedCellSmoothing<2>;
+    template class LinearizedCellSmoothing<3>;
+  } // namespace remedies
+} // namespace mpm
