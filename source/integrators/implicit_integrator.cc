@@ -57,6 +57,9 @@ namespace mpm
         symmetric = symmetric && material.has_symmetric_tangent() &&
                     !smoothing->smooths(b);
       }
+    for (unsigned int b = 0; b < state.bodies.size(); ++b)
+      if (state.bodies[b].is_rigid())
+        rigid_bodies.push_back(b);
     linear_solver = p.implicit.linear_solver;
     if (linear_solver == LinearSolver::automatic)
       linear_solver = symmetric ? LinearSolver::cg : LinearSolver::gmres;
@@ -120,22 +123,31 @@ namespace mpm
   std::vector<std::string>
   ImplicitIntegrator<dim>::statistics_columns() const
   {
-    return {"newton_iterations",
-            "linear_iterations",
-            "step_cuts",
-            "relative_residual",
-            "convergence_rate"};
+    std::vector<std::string> c = {"newton_iterations",
+                                  "linear_iterations",
+                                  "step_cuts",
+                                  "relative_residual",
+                                  "convergence_rate"};
+    if (!rigid_bodies.empty())
+      for (unsigned int d = 0; d < dim; ++d)
+        c.push_back(std::string("reaction_") + "xyz"[d]);
+    return c;
   }
 
   template <int dim>
   std::vector<double>
   ImplicitIntegrator<dim>::statistics_values() const
   {
-    return {double(last.iterations),
-            double(last.linear_iterations),
-            double(last_cuts),
-            last.residuals.empty() ? 0. : last.residuals.back(),
-            convergence_rate(last.residuals)};
+    std::vector<double> v = {double(last.iterations),
+                             double(last.linear_iterations),
+                             double(last_cuts),
+                             last.residuals.empty() ? 0. :
+                                                      last.residuals.back(),
+                             convergence_rate(last.residuals)};
+    if (!rigid_bodies.empty())
+      for (unsigned int d = 0; d < dim; ++d)
+        v.push_back(reaction[d]);
+    return v;
   }
 
   template <int dim>
@@ -163,7 +175,7 @@ namespace mpm
     while (t_end - t > 1e-12 * dt)
       {
         const double h = std::min(sub, t_end - t);
-        find_unknowns();
+        find_unknowns(t, h);
         last = solve_equilibrium(t + h, h);
         total_its += last.iterations;
         total_linear += last.linear_iterations;
@@ -187,7 +199,8 @@ namespace mpm
                         << "): step cut to " << sub << std::endl;
             continue;
           }
-        commit(h);
+        compute_reaction();
+        commit(t, h);
         t += h;
         if (last.iterations <= 4 && depth > 0)
           {
@@ -210,7 +223,7 @@ namespace mpm
 
   template <int dim>
   void
-  ImplicitIntegrator<dim>::find_unknowns()
+  ImplicitIntegrator<dim>::find_unknowns(const double t, const double dt)
   {
     // Nodes without mass (no particle reaches them) are not unknowns.
     compute_nodal_fields();
@@ -220,8 +233,109 @@ namespace mpm
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
       active[i] = state.p2g.local_element(i * P::n_components + P::mass) >
                   state.min_nodal_mass;
-    system.build_constraints(grid, active);
+    find_prescribed_nodes();
+    std::vector<Tensor<1, dim>> values(grid.n_local_nodes());
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      if (prescribed[i])
+        values[i] = rigid_displacement(prescribed_by[i], t, dt);
+    system.build_constraints(grid, active, prescribed, values);
     increment = 0.;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ImplicitIntegrator<dim>::rigid_displacement(const unsigned int r,
+                                              const double       t,
+                                              const double       dt) const
+  {
+    double v[dim];
+    state.bodies[rigid_bodies[r]].prescribed_velocity.value(Point<dim>(),
+                                                            t + dt / 2,
+                                                            v);
+    Tensor<1, dim> u;
+    for (unsigned int c = 0; c < dim; ++c)
+      u[c] = v[c] * dt;
+    return u;
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::find_prescribed_nodes()
+  {
+    const auto        &grid = state.background;
+    const unsigned int n_r  = rigid_bodies.size();
+    prescribed.assign(grid.n_local_nodes(), 0);
+    prescribed_by.assign(grid.n_local_nodes(), 0);
+    if (n_r == 0)
+      return;
+    using L = ParticleLayout<dim>;
+    std::vector<int> rigid_index(state.bodies.size(), -1);
+    for (unsigned int r = 0; r < n_r; ++r)
+      rigid_index[rigid_bodies[r]] = r;
+    grid.initialize_vector(rigid_mass, n_r);
+    rigid_mass                            = 0.;
+    double                             *m = rigid_mass.begin();
+    shape_functions::CellQ1Weights<dim> weights(grid, nullptr);
+    std::string                         unused;
+    for_each_cell_with_particles(
+      grid, state.particle_handler, [&](const auto &cell, const auto &pic) {
+        weights.begin_cell(cell);
+        for (const auto &particle : pic)
+          {
+            const double *prop = particle.get_properties().data();
+            const int r = rigid_index[static_cast<unsigned int>(prop[L::body])];
+            if (r < 0)
+              continue;
+            weights.evaluate(particle, false, unused);
+            for (unsigned int a = 0; a < weights.size(); ++a)
+              m[weights.node(a) * n_r + r] += prop[L::mass] * weights.value(a);
+          }
+      });
+    rigid_mass.compress(VectorOperation::add);
+    rigid_mass.update_ghost_values();
+    // A node follows the rigid body of most mass there: in its Prescribed
+    // directions if it also carries another body, in every direction if
+    // not (no other stiffness holds it).
+    using P                  = transfer::P2GLayout<dim>;
+    const unsigned int all   = (1u << dim) - 1;
+    const double       m_min = state.min_nodal_mass;
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      {
+        double       rigid = 0, largest = 0;
+        unsigned int which = 0;
+        for (unsigned int r = 0; r < n_r; ++r)
+          {
+            const double mr = rigid_mass.local_element(i * n_r + r);
+            rigid += mr;
+            if (mr > largest)
+              {
+                largest = mr;
+                which   = r;
+              }
+          }
+        if (!(largest > m_min))
+          continue;
+        const double total =
+          state.p2g.local_element(i * P::n_components + P::mass);
+        prescribed_by[i] = which;
+        prescribed[i] =
+          total - rigid > m_min ?
+            state.bodies[rigid_bodies[which]].prm.prescribed_directions :
+            all;
+      }
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::compute_reaction()
+  {
+    reaction = 0;
+    for (unsigned int i = 0; i < state.background.n_owned_nodes(); ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        if (prescribed[i] & (1u << c))
+          reaction[c] += internal_force.local_element(i * dim + c) -
+                         external_force.local_element(i * dim + c);
+    reaction = Utilities::MPI::sum(reaction, state.comm);
   }
 
   template <int dim>
@@ -243,6 +357,42 @@ namespace mpm
              r.norm <= p.absolute_residual_tolerance;
     };
     result.residuals.push_back(relative(r));
+    if (system.has_prescribed_motion())
+      {
+        // Predictor: the rigid bodies' motion as the values of their
+        // nodes in a linear solve with the tangent at the start, so the
+        // nodes next to them follow too (starting from the motion at
+        // their nodes alone would crush the cells between).
+        system.prescribe_motion(true);
+        Residual   with_motion;
+        const bool assembled = assemble(t, dt, true, with_motion, result.error);
+        typename NodalLinearSystem<dim>::SolveResult solved;
+        if (assembled)
+          {
+            TimerOutput::Scope timer(state.timer, "implicit linear solve");
+            solved = system.solve(state.background, p, linear_solver, delta);
+          }
+        system.prescribe_motion(false);
+        if (!assembled)
+          return result;
+        result.linear_iterations += solved.iterations;
+        if (!solved.error.empty())
+          {
+            result.error = solved.error;
+            return result;
+          }
+        ++result.iterations;
+        first_energy = std::abs(delta * system.right_hand_side());
+        add_to_increment(delta, 1.);
+        if (!assemble(t, dt, true, r, result.error))
+          return result;
+        result.residuals.push_back(relative(r));
+        if (small_residual(r))
+          {
+            result.converged = true;
+            return result;
+          }
+      }
     for (;;)
       {
         if (small_residual(r) && result.iterations == 0)
@@ -269,7 +419,7 @@ namespace mpm
         }
         ++result.iterations;
         const double energy = std::abs(delta * system.right_hand_side());
-        if (result.iterations == 1)
+        if (first_energy == 0)
           first_energy = energy;
         // Backtracking: halve the increment until the residual decreases.
         const double previous = r.norm;
@@ -398,6 +548,17 @@ namespace mpm
             weights.evaluate(particle, true, error);
             Point q;
             q.body = static_cast<unsigned int>(prop[L::body]);
+            if (state.bodies[q.body].is_rigid())
+              {
+                // no strain, no stress: only its loads (pass 2)
+                q.j     = 1;
+                q.f     = unit_symmetric_tensor<dim>();
+                q.f_inv = q.f;
+                q.F     = q.f;
+                q.V_n   = 0;
+                points.push_back(q);
+                continue;
+              }
             for (unsigned int a = 0; a < nv; ++a)
               for (unsigned int i = 0; i < dim; ++i)
                 q.h[i] += increment.local_element(nodes[a] * dim + i) *
@@ -560,7 +721,7 @@ namespace mpm
 
   template <int dim>
   void
-  ImplicitIntegrator<dim>::commit(const double dt)
+  ImplicitIntegrator<dim>::commit(const double t, const double dt)
   {
     // The converged increment as a grid velocity u / dt: the explicit
     // stress update then gives F = (I + h) F_n and the material's stress
@@ -588,6 +749,14 @@ namespace mpm
                                           &state.volume_sums);
       state.local_error.record(r.error);
     }
+    // A rigid body moves as prescribed, not with the grid.
+    using L = ParticleLayout<dim>;
+    std::vector<Point<dim>> rigid_start;
+    if (!rigid_bodies.empty())
+      for (const auto &p : state.particle_handler)
+        if (state.bodies[static_cast<unsigned int>(p.get_properties()[L::body])]
+              .is_rigid())
+          rigid_start.push_back(p.get_location());
     {
       TimerOutput::Scope timer(state.timer, "G2P");
       state.local_error.record(transfer::grid_to_particle(
@@ -597,6 +766,23 @@ namespace mpm
                                   1.,
                                   nullptr}));
     }
+    if (!rigid_bodies.empty())
+      {
+        std::vector<Tensor<1, dim>> u(state.bodies.size());
+        for (unsigned int r = 0; r < rigid_bodies.size(); ++r)
+          u[rigid_bodies[r]] = rigid_displacement(r, t, dt);
+        unsigned int k = 0;
+        for (auto &p : state.particle_handler)
+          {
+            double            *prop = p.get_properties().data();
+            const unsigned int b    = static_cast<unsigned int>(prop[L::body]);
+            if (!state.bodies[b].is_rigid())
+              continue;
+            p.set_location(rigid_start[k++] + u[b]);
+            for (unsigned int c = 0; c < dim; ++c)
+              prop[L::velocity + c] = u[b][c] / dt;
+          }
+      }
     TimerOutput::Scope timer(state.timer, "position update");
     state.relocate_moved_particles();
   }

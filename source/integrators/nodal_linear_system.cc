@@ -70,11 +70,28 @@ namespace mpm
 
   template <int dim>
   void
-  NodalLinearSystem<dim>::build_constraints(const BackgroundGrid<dim> &grid,
-                                            const std::vector<char>   &active)
+  NodalLinearSystem<dim>::build_constraints(
+    const BackgroundGrid<dim>         &grid,
+    const std::vector<char>           &active,
+    std::vector<unsigned char>        &prescribed,
+    const std::vector<Tensor<1, dim>> &values)
   {
-    node_constraints.clear();
-    node_constraints.reinit(relevant);
+    // Two sets of the same lines: homogeneous for Newton's corrections,
+    // and with the rigid bodies' motion for its predictor.
+    for (auto *c : {&node_constraints, &prescribed_motion})
+      {
+        c->clear();
+        c->reinit(relevant);
+      }
+    const auto add_line = [&](const Index k, const double value) {
+      node_constraints.add_line(k);
+      prescribed_motion.add_line(k);
+      prescribed_motion.set_inhomogeneity(k, value);
+    };
+    const auto add_entry = [&](const Index k, const Index l, const double w) {
+      node_constraints.add_entry(k, l, w);
+      prescribed_motion.add_entry(k, l, w);
+    };
     std::vector<char> done(grid.n_local_nodes(), 0);
     for (const auto &cell : grid.owned_cells())
       for (unsigned int v = 0; v < BackgroundGrid<dim>::n_vertices; ++v)
@@ -87,12 +104,17 @@ namespace mpm
           const unsigned int m     = grid.n_constrained_directions(i);
           if (!active[i] || m == dim)
             {
+              prescribed[i] = 0;
               for (unsigned int c = 0; c < dim; ++c)
-                node_constraints.add_line(first + c);
+                add_line(first + c, 0.);
               continue;
             }
-          if (m == 0)
-            continue;
+          // A wall's direction wins over a rigid body's: the body's bit
+          // is cleared, the wall's constraint written instead.
+          const auto take = [&](const unsigned int c) {
+            prescribed[i] &= ~(1u << c);
+            add_line(first + c, 0.);
+          };
           // The node moves in the walls' tangent plane. One wall of normal
           // n: the component along n's largest entry follows the others,
           // n_k u_k = -sum_{d != k} n_d u_d. Two walls (3D): the node moves
@@ -105,34 +127,39 @@ namespace mpm
               for (unsigned int d = 1; d < dim; ++d)
                 if (std::abs(n[d]) > std::abs(n[k]))
                   k = d;
-              node_constraints.add_line(first + k);
+              take(k);
               for (unsigned int d = 0; d < dim; ++d)
                 if (d != k && n[d] != 0.)
-                  node_constraints.add_entry(first + k,
-                                             first + d,
-                                             -n[d] / n[k]);
+                  add_entry(first + k, first + d, -n[d] / n[k]);
             }
           else if constexpr (dim == 3)
-            {
-              const Tensor<1, dim> t =
-                cross_product_3d(grid.constrained_direction(i, 0),
-                                 grid.constrained_direction(i, 1));
-              unsigned int k = 0;
-              for (unsigned int d = 1; d < dim; ++d)
-                if (std::abs(t[d]) > std::abs(t[k]))
-                  k = d;
-              for (unsigned int d = 0; d < dim; ++d)
-                if (d != k)
-                  {
-                    node_constraints.add_line(first + d);
-                    if (t[d] != 0.)
-                      node_constraints.add_entry(first + d,
-                                                 first + k,
-                                                 t[d] / t[k]);
-                  }
-            }
+            if (m == 2)
+              {
+                const Tensor<1, dim> t =
+                  cross_product_3d(grid.constrained_direction(i, 0),
+                                   grid.constrained_direction(i, 1));
+                unsigned int k = 0;
+                for (unsigned int d = 1; d < dim; ++d)
+                  if (std::abs(t[d]) > std::abs(t[k]))
+                    k = d;
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (d != k)
+                    {
+                      take(d);
+                      if (t[d] != 0.)
+                        add_entry(first + d, first + k, t[d] / t[k]);
+                    }
+              }
+          for (unsigned int c = 0; c < dim; ++c)
+            if (prescribed[i] & (1u << c))
+              add_line(first + c, values[i][c]);
         }
     node_constraints.close();
+    prescribed_motion.close();
+    bool any = false;
+    for (const unsigned char b : prescribed)
+      any = any || b != 0;
+    moves_prescribed = Utilities::MPI::max(any ? 1 : 0, comm) == 1;
   }
 
   template <int dim>
@@ -150,7 +177,7 @@ namespace mpm
                                    const Vector<double>     &cell_rhs,
                                    const std::vector<Index> &indices)
   {
-    node_constraints.distribute_local_to_global(
+    constraints().distribute_local_to_global(
       cell_matrix, cell_rhs, indices, matrix, rhs);
   }
 
@@ -159,7 +186,7 @@ namespace mpm
   NodalLinearSystem<dim>::add_cell_rhs(const Vector<double>     &cell_rhs,
                                        const std::vector<Index> &indices)
   {
-    node_constraints.distribute_local_to_global(cell_rhs, indices, rhs);
+    constraints().distribute_local_to_global(cell_rhs, indices, rhs);
   }
 
   template <int dim>
@@ -175,7 +202,7 @@ namespace mpm
     // constraint anyway).
     double sum = 0, count = 0;
     for (const Index k : owned)
-      if (!node_constraints.is_constrained(k))
+      if (!constraints().is_constrained(k))
         {
           sum += std::abs(matrix.diag_element(k));
           ++count;
@@ -184,7 +211,7 @@ namespace mpm
     count          = Utilities::MPI::sum(count, comm);
     diagonal_scale = count > 0 && sum > 0 ? sum / count : 1.;
     for (const Index k : owned)
-      if (node_constraints.is_constrained(k) && matrix.diag_element(k) == 0.)
+      if (constraints().is_constrained(k) && matrix.diag_element(k) == 0.)
         matrix.set(k, k, diagonal_scale);
     matrix.compress(VectorOperation::insert);
   }
@@ -294,7 +321,7 @@ namespace mpm
       {
         result.error = std::string("the linear solver failed: ") + e.what();
       }
-    node_constraints.distribute(x);
+    constraints().distribute(x);
     return result;
   }
 

@@ -273,6 +273,27 @@ namespace mpm
                         Patterns::List(Patterns::Integer(0, 255)),
                         "Body-mesh boundary ids that carry the traction "
                         "(box: 0/1 x min/max, 2/3 y, 4/5 z).");
+      prm.declare_entry(
+        "Prescribed velocity",
+        "",
+        Patterns::Anything(),
+        "Empty: the body moves with the grid. Otherwise the body is rigid "
+        "(Material/Model = rigid) and moves with this velocity [m/s], dim "
+        "expressions of t separated by ';': the nodes it reaches follow "
+        "it, in the Prescribed directions where they also carry another "
+        "body, in every direction elsewhere (Integrator = quasi-static).");
+      prm.declare_entry(
+        "Prescribed directions",
+        dim == 1 ? "x" :
+        dim == 2 ? "x, y" :
+                   "x, y, z",
+        Patterns::List(Patterns::Selection(dim == 1 ? "x" :
+                                           dim == 2 ? "x|y" :
+                                                      "x|y|z")),
+        "The directions in which a rigid body (Prescribed velocity) "
+        "moves the nodes it shares with another body: all for a rough "
+        "contact, the normal one for a smooth one (a smooth footing "
+        "pressed down in y: y).");
       prm.enter_subsection("Material");
       materials::declare_material_parameters(prm);
       prm.leave_subsection();
@@ -304,6 +325,11 @@ namespace mpm
       body_force              = prm.get("Body force");
       traction                = prm.get("Traction");
       traction_boundary_ids   = parse_id_list(prm.get("Traction boundary ids"));
+      prescribed_velocity     = prm.get("Prescribed velocity");
+      prescribed_directions   = 0;
+      for (const auto &d :
+           Utilities::split_string_list(prm.get("Prescribed directions")))
+        prescribed_directions |= 1u << (d[0] - 'x');
       prm.enter_subsection("Locking remedies");
       locking_remedies = remedies::parse_selection(prm);
       prm.leave_subsection();

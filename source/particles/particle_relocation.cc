@@ -1,5 +1,7 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/cell_id.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_relocation.h>
@@ -54,6 +56,33 @@ namespace mpm
       return false;
     }
 
+    /// The locally owned cell that contains @p x (and x's reference
+    /// coordinates there), if there is one: a search of the whole local
+    /// grid, for the rare particle that moved beyond the ghost layer.
+    template <int dim>
+    bool
+    owned_cell_around(const Triangulation<dim> &tria,
+                      const Point<dim>         &x,
+                      CellIterator<dim>        &cell,
+                      Point<dim>               &xi)
+    {
+      try
+        {
+          const auto found = GridTools::find_active_cell_around_point(
+            StaticMappingQ1<dim>::mapping, tria, x);
+          if (found.first.state() != IteratorState::valid ||
+              !found.first->is_locally_owned())
+            return false;
+          cell = found.first;
+          xi   = found.second;
+          return true;
+        }
+      catch (...)
+        {
+          return false;
+        }
+    }
+
     /// A particle on its way to another cell: everything to re-insert it.
     template <int dim>
     struct Moving
@@ -77,6 +106,11 @@ namespace mpm
     std::vector<Moving<dim>>                    local_moves;
     std::map<unsigned int, std::vector<double>> to_send;
     bool                                        unplaced = false;
+    /// particles that left the locally known grid (x, iterator)
+    std::vector<
+      std::pair<Point<dim>,
+                typename Particles::ParticleHandler<dim>::particle_iterator>>
+      far;
 
     for_each_cell_with_particles(
       grid, particles, [&](const auto &cell, const auto &pic) {
@@ -95,7 +129,7 @@ namespace mpm
             Point<dim>        target_xi;
             if (!find_cell(grid, cell, x, xi, target, target_xi))
               {
-                unplaced = true;
+                far.emplace_back(x, it);
                 continue;
               }
             const auto props = it->get_properties();
@@ -124,18 +158,82 @@ namespace mpm
           }
       });
 
-    // One reduction for both questions: could every particle be placed,
-    // and did any change its cell (if none did, the handler is left as it
-    // is: its remove_particles() walks all particles to recount them).
+    // One reduction for both questions: did a particle leave the locally
+    // known grid, and did any change its cell (if none did, the handler is
+    // left as it is: its remove_particles() walks all particles to
+    // recount them).
     const bool         parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
-    const unsigned int mine[2]  = {unplaced ? 1u : 0u,
+    const unsigned int mine[2]  = {far.empty() ? 0u : 1u,
                                   leaving.empty() ? 0u : 1u};
     unsigned int status[2] = {mine[0], mine[1]};
     if (parallel)
       Utilities::MPI::max(mine, comm, status);
+    // A particle beyond the ghost layer (an implicit step can move one by
+    // several cells): every rank looks for the owned cell that contains
+    // it, among all such particles of all ranks. Found: it travels there
+    // with the others; not found (it left the grid), or serial: the
+    // caller's sort deals with it.
+    std::map<unsigned int, std::vector<double>> to_send_far;
     if (status[0] != 0)
-      return false;
-    if (status[1] == 0)
+      {
+        if (!parallel)
+          return false;
+        std::vector<double> mine_x;
+        for (const auto &f : far)
+          for (unsigned int d = 0; d < dim; ++d)
+            mine_x.push_back(f.first[d]);
+        const auto all = Utilities::MPI::all_gather(comm, mine_x);
+        if (std::any_of(all.begin(), all.end(), [](const auto &v) {
+              return !v.empty();
+            }))
+          {
+            const int        me = Utilities::MPI::this_mpi_process(comm);
+            std::vector<int> owner;
+            std::size_t      my_first = 0;
+            for (unsigned int r = 0; r < all.size(); ++r)
+              {
+                if (int(r) == me)
+                  my_first = owner.size();
+                for (std::size_t k = 0; k < all[r].size(); k += dim)
+                  {
+                    Point<dim> x;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      x[d] = all[r][k + d];
+                    CellIterator<dim> c;
+                    Point<dim>        c_xi;
+                    owner.push_back(
+                      owned_cell_around(grid.triangulation(), x, c, c_xi) ? me :
+                                                                            -1);
+                  }
+              }
+            std::vector<int> found(owner.size());
+            Utilities::MPI::max(ArrayView<const int>(owner),
+                                comm,
+                                ArrayView<int>(found));
+            owner = found;
+            for (std::size_t k = 0; k < far.size(); ++k)
+              {
+                const int o = owner[my_first + k];
+                if (o < 0)
+                  {
+                    unplaced = true;
+                    continue;
+                  }
+                // Packed as: id, x, properties.
+                auto &buffer = to_send_far[o];
+                auto  it     = far[k].second;
+                buffer.push_back(static_cast<double>(it->get_id()));
+                for (unsigned int d = 0; d < dim; ++d)
+                  buffer.push_back(far[k].first[d]);
+                const auto props = it->get_properties();
+                buffer.insert(buffer.end(), props.begin(), props.end());
+                leaving.push_back(it);
+              }
+          }
+        if (Utilities::MPI::max(unplaced ? 1 : 0, comm) != 0)
+          return false;
+      }
+    else if (status[1] == 0)
       return true;
 
     particles.remove_particles(leaving);
@@ -172,6 +270,26 @@ namespace mpm
                 typename Triangulation<dim>::active_cell_iterator(cell),
                 ArrayView<const double>(&buffer[i + n_cid + 1 + 2 * dim],
                                         n_props));
+            }
+        // (a collective only when some rank had such a particle)
+        const auto received_far =
+          status[0] != 0 ? Utilities::MPI::some_to_some(comm, to_send_far) :
+                           std::map<unsigned int, std::vector<double>>();
+        const unsigned int n_far_entry = 1 + dim + n_props;
+        for (const auto &[rank, buffer] : received_far)
+          for (std::size_t i = 0; i < buffer.size(); i += n_far_entry)
+            {
+              Point<dim> x, xi;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] = buffer[i + 1 + d];
+              CellIterator<dim> cell;
+              owned_cell_around(grid.triangulation(), x, cell, xi);
+              particles.insert_particle(
+                x,
+                xi,
+                static_cast<types::particle_index>(buffer[i]),
+                cell,
+                ArrayView<const double>(&buffer[i + 1 + dim], n_props));
             }
       }
     return true;

@@ -113,6 +113,29 @@ namespace mpm
                                             c,
                                             true,
                                             where + "/Traction");
+        const bool rigid    = body.material->name() == "rigid";
+        if (rigid != body.is_rigid())
+          throw InputError(
+            where + (rigid ? "/Material/Model = rigid needs a Prescribed "
+                             "velocity of the body" :
+                             "/Prescribed velocity needs Material/Model = "
+                             "rigid"));
+        if (rigid)
+          {
+            if (params.time.integrator !=
+                Parameters::TimeStepping::Integrator::quasi_static)
+              throw InputError(where +
+                               "/Prescribed velocity: a body of prescribed "
+                               "motion needs Time stepping/Integrator = "
+                               "quasi-static");
+            body.prescribed_velocity =
+              Expression<dim>(body.prm.prescribed_velocity,
+                              dim,
+                              spatial_variables(dim),
+                              c,
+                              true,
+                              where + "/Prescribed velocity");
+          }
         state.layout.n_history =
           std::max(state.layout.n_history, body.material->n_history());
         body.prm.locking_remedies.check({where,

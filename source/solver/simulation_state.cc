@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/particle_relocation.h>
 #include <mpm/remedies/volumetric_smoothing.h>
@@ -26,8 +28,27 @@ namespace mpm
     lost_messages.clear();
     if (!relocate_particles(background, particle_handler, comm))
       {
+        // deal.II's sort drops a particle whose new cell lies beyond the
+        // ghost layer of its rank without telling: count them.
+        const auto count = [&]() {
+          return dealii::Utilities::MPI::sum(
+            static_cast<double>(particle_handler.n_locally_owned_particles()),
+            comm);
+        };
+        const double before = count();
         particle_handler.sort_particles_into_subdomains_and_cells();
         ++n_global_sorts;
+        const double reported =
+          dealii::Utilities::MPI::sum(static_cast<double>(lost_messages.size()),
+                                      comm);
+        const double dropped = before - count() - reported;
+        if (dropped > 0.5)
+          local_error.record(
+            std::to_string(static_cast<long>(dropped)) +
+            " particle(s) moved in one step into cells beyond the ghost "
+            "layer of their rank and were lost: on several ranks a step "
+            "may move a particle by about one cell at most (take a "
+            "smaller Time step, or run on one rank)");
       }
     if (!lost_messages.empty() && !params.boundary.remove_lost_particles)
       local_error.record(lost_messages.front() +

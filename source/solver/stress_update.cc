@@ -58,9 +58,16 @@ namespace mpm
       return static_cast<unsigned int>(prop[L::body]);
     };
 
+    // A rigid body (quasi-static runs) has no kinematics of its own.
+    std::vector<char> rigid(bodies.size());
+    bool              any_rigid = false;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      any_rigid = (rigid[b] = bodies[b].is_rigid()) || any_rigid;
+
     // L_p and F_p of the step, and the cell's Q1 values N at the particle
     // (for the node average). Standard MPM takes grad N of the cell; the
-    // domain families their stencil. False for a bad particle domain.
+    // domain families their stencil. False for a bad particle domain and
+    // a rigid body's particle.
     shape_functions::Stencil<dim> stencil;
     auto                          kinematics_of = [&](const auto         &p,
                              const auto         &geo,
@@ -70,6 +77,8 @@ namespace mpm
                              const double       *prop,
                              Tensor<2, dim>     &grad_v,
                              Tensor<2, dim>     &F) {
+      if (any_rigid && rigid[body_of(prop)])
+        return false;
       if (!domains)
         {
           geo.values_and_gradients(p.get_reference_location(), N, G);

@@ -76,9 +76,12 @@ namespace mpm
       std::string         error;     ///< why it failed (if it did)
     };
 
-    // The phases of one (sub-)step of length dt ending at t.
+    // The phases of one (sub-)step from t to t + dt.
+    /// The unknowns (nodes with mass), their constraints, and the
+    /// increment's start: the rigid bodies' motion at the nodes they
+    /// reach.
     void
-    find_unknowns();
+    find_unknowns(const double t, const double dt);
     NewtonResult
     solve_equilibrium(const double t, const double dt);
     /// Residual (and tangent) at the current increment; false and
@@ -90,7 +93,21 @@ namespace mpm
              Residual    &residual,
              std::string &error);
     void
-    commit(const double dt);
+    commit(const double t, const double dt);
+
+    /// The displacement of rigid body @p r (index into rigid_bodies) from
+    /// t to t + dt (midpoint rule).
+    dealii::Tensor<1, dim>
+    rigid_displacement(const unsigned int r,
+                       const double       t,
+                       const double       dt) const;
+    /// The nodes the rigid bodies reach: prescribed, prescribed_by.
+    void
+    find_prescribed_nodes();
+    /// The force the prescribed nodes exert on the other bodies,
+    /// f_int - f_ext there, summed over the ranks.
+    void
+    compute_reaction();
 
     /// The increment += alpha * delta (owned entries), ghosts updated.
     void
@@ -101,12 +118,19 @@ namespace mpm
     NodalLinearSystem<dim>                   system;
     /// The partition the system was built for.
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partition;
-    NodalVector         increment; ///< u, dim components per node
-    NodalVector         internal_force, external_force;
-    std::vector<char>   active; ///< per node-local index: has mass
-    NewtonResult        last;   ///< of the last sub-step
-    unsigned int        last_cuts = 0;
-    std::vector<double> history_scratch;
+    NodalVector               increment; ///< u, dim components per node
+    NodalVector               internal_force, external_force;
+    std::vector<char>         active; ///< per node-local index: has mass
+    NewtonResult              last;   ///< of the last sub-step
+    unsigned int              last_cuts = 0;
+    std::vector<double>       history_scratch;
+    std::vector<unsigned int> rigid_bodies; ///< bodies of prescribed motion
+    NodalVector               rigid_mass;   ///< per rigid body, per node
+    /// per node-local index: the directions (bits) it follows a rigid
+    /// body in, and which one (index into rigid_bodies)
+    std::vector<unsigned char> prescribed;
+    std::vector<unsigned int>  prescribed_by;
+    dealii::Tensor<1, dim>     reaction; ///< of the last sub-step
     using Smoothing = remedies::LinearizedCellSmoothing<dim>;
     /// `Volumetric smoothing = cell` of the trial increments
     std::unique_ptr<Smoothing>             smoothing;

@@ -34,13 +34,36 @@ namespace mpm
     void
     reinit(const BackgroundGrid<dim> &grid, const MPI_Comm comm);
 
-    /// Constraints of this step: every direction of a node whose @p active
-    /// entry (per node-local index) is 0, the walls' normal directions of
-    /// the others. Only the nodes of owned cells are constrained (the
-    /// rows this rank assembles).
+    /**
+     * Constraints of this step: every direction of a node whose @p active
+     * entry (per node-local index) is 0, the walls' normal directions of
+     * the others, and the directions (bits) of @p prescribed, the motion
+     * of a rigid body, with the values @p values in the predictor's set.
+     * A wall that constrains a direction takes it from @p prescribed (bit
+     * cleared). Only the nodes of owned cells are constrained (the rows
+     * this rank assembles).
+     */
     void
-    build_constraints(const BackgroundGrid<dim> &grid,
-                      const std::vector<char>   &active);
+    build_constraints(const BackgroundGrid<dim>                 &grid,
+                      const std::vector<char>                   &active,
+                      std::vector<unsigned char>                &prescribed,
+                      const std::vector<dealii::Tensor<1, dim>> &values);
+
+    /// Whether some node of some rank follows a rigid body.
+    bool
+    has_prescribed_motion() const
+    {
+      return moves_prescribed;
+    }
+
+    /// Assemble and solve with the prescribed values (Newton's predictor
+    /// from a zero increment) or homogeneous constraints (its
+    /// corrections).
+    void
+    prescribe_motion(const bool on)
+    {
+      predictor = on;
+    }
 
     /// The global indices of the unknowns of a cell's nodes, node-major.
     void
@@ -96,10 +119,11 @@ namespace mpm
       v.reinit(owned, comm);
     }
 
+    /// The constraints in use (prescribe_motion()).
     const dealii::AffineConstraints<double> &
     constraints() const
     {
-      return node_constraints;
+      return predictor ? prescribed_motion : node_constraints;
     }
 
     const dealii::TrilinosWrappers::MPI::Vector &
@@ -113,6 +137,9 @@ namespace mpm
     std::vector<Index>                     node_to_global; ///< per local node
     dealii::IndexSet                       owned, relevant;
     dealii::AffineConstraints<double>      node_constraints;
+    dealii::AffineConstraints<double>      prescribed_motion;
+    bool                                   predictor        = false;
+    bool                                   moves_prescribed = false;
     dealii::TrilinosWrappers::SparseMatrix matrix;
     dealii::TrilinosWrappers::MPI::Vector  rhs;
     double diagonal_scale = 1; ///< of the constrained rows' diagonal

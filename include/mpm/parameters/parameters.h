@@ -102,6 +102,11 @@ namespace mpm
       std::string body_force;       // muparser of x, X and t
       std::string traction;         // muparser of x, X and t
       std::vector<dealii::types::boundary_id> traction_boundary_ids;
+      /// muparser of t, dim components; empty: the body moves freely
+      std::string prescribed_velocity;
+      /// the directions the body imposes on the nodes it shares with
+      /// others (bit d: direction d)
+      unsigned int prescribed_directions = 0;
 
       /// The locking remedies of this body, with their settings
       /// (subsection Locking remedies; remedies/registry.h).

@@ -31,6 +31,15 @@ namespace mpm
     Expression<dim>                      initial_stress;
     Expression<2 * dim>                  body_force;
     Expression<2 * dim>                  traction;
+    /// of t (at the origin); only for a rigid body
+    Expression<dim> prescribed_velocity;
+
+    /// Whether the body moves as prescribed (Material/Model = rigid).
+    bool
+    is_rigid() const
+    {
+      return !prm.prescribed_velocity.empty();
+    }
 
     /// Evaluate b(x, X, t) per unit mass.
     void

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Smooth rigid strip footing on undrained clay (prm/strip_footing.prm):
+# standard MPM and Volumetric smoothing = cell (theta-bar) on grids h =
+# 0.25, 0.125, 0.0625 (B = 1), loaded by the footing's settlement in
+# steps of 0.01 B up to 0.5 B. Writes OUT/<variant>_<h>.txt (settlement/B,
+# q/c_u = -2 reaction_y/(B c_u)) and prints, per run, q/c_u at settlement
+# 0.05, 0.1, 0.2 B and at the last converged step, the settlement reached,
+# the Newton iterations and the wall time. A run whose Newton iteration
+# fails after every step cut stops there; its curve ends at that point.
+# Prandtl's limit: q/c_u = 2 + pi = 5.142.
+# Usage: scripts/strip_footing_study.sh [OUT] [h values...]   (MPM=...)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mpm=${MPM:-$root/build/mpm}
+out=$(realpath -m "${1:-results/strip_footing}")
+shift || true
+mkdir -p "$out"
+echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | settlement reached / B | Newton | wall [s] |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for h in ${@:-0.25 0.125 0.0625}; do
+  read -r nx ny ns nf <<< "$(python3 -c "print(round(5/$h), round(6.25/$h), round(5/$h), round(0.5/$h))")"
+  for variant in standard theta-bar; do
+    smoothing=none
+    [ $variant = theta-bar ] && smoothing=cell
+    dir="$out/${variant}_$h"
+    cat > "$out/case.prm" <<PRM
+include $root/prm/strip_footing.prm
+subsection Grid
+  set Subdivisions = $nx, $ny
+end
+subsection Output
+  set Directory = $dir
+  set Interval = 0.01
+  set Write vtu = false
+end
+subsection Bodies
+  subsection Body 0
+    set Subdivisions = $ns, $ns
+    subsection Locking remedies
+      set Volumetric smoothing = $smoothing
+    end
+  end
+  subsection Body 1
+    set Upper corner = 0.5, $(python3 -c "print(5 + $h)")
+    set Subdivisions = $nf, 1
+  end
+end
+PRM
+    rm -rf "$dir"
+    start=$(date +%s.%N)
+    "$mpm" "$out/case.prm" > "$dir.log" 2>&1 || true
+    wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
+    python3 - "$dir/statistics.txt" "$out/${variant}_$h.txt" "$variant" "$h" "$wall" <<'PY'
+import sys
+path, curve, variant, h, wall = sys.argv[1:]
+lines = [l.split() for l in open(path) if l.strip()]
+names = lines[0]
+rows = [dict(zip(names, r)) for r in lines[1:]]
+B, cu = 1.0, 1e4
+pts = [(float(r["time"]) / B, -2 * float(r["reaction_y"]) / (B * cu)) for r in rows]
+with open(curve, "w") as f:
+    f.write("settlement_over_B q_over_cu\n")
+    for s, q in pts:
+        f.write(f"{s:.4f} {q:.5f}\n")
+def at(s):
+    c = [q for x, q in pts if abs(x - s) < 1e-9]
+    return f"{c[0]:.3f}" if c else "-"
+newton = sum(int(float(r["newton_iterations"])) for r in rows)
+print(f"| {variant} | {h} | {at(0.05)} | {at(0.1)} | {at(0.2)} | "
+      f"{pts[-1][1]:.3f} | {pts[-1][0]:.2f} | {newton} | {wall} |")
+PY
+  done
+done
