@@ -7,7 +7,9 @@
 # 0.05, 0.1, 0.2 B and at the last converged step, the settlement reached,
 # the Newton iterations and the wall time. A run whose Newton iteration
 # fails after every step cut stops there; its curve ends at that point.
-# Prandtl's limit: q/c_u = 2 + pi = 5.142.
+# Prandtl's limit: q/c_u = 2 + pi = 5.142. Figure:
+# scripts/plot_strip_footing.py OUT doc/figures/strip_footing.png (the
+# validation suite's part strip_footing runs both).
 # Usage: scripts/strip_footing_study.sh [OUT] [h values...]   (MPM=...)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

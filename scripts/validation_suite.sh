@@ -27,6 +27,8 @@
 #                   (a) 21 runs at h = 4, 2, 1; (b) 14 runs at h = 4
 #                   and 2 and 3 at h = 1                           20 min
 #   water_column    scripts/water_column_study.sh + plot (section 6) 1.8 min
+#   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static
+#                   (doc/implicit.md)                               2.5 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
 # Full suite: 71 minutes. QUICK=1 (coarse grids, short runs, few
@@ -41,7 +43,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 py=/usr/bin/python3
@@ -134,6 +136,13 @@ part_thick_cylinder() {
   [ "$quick" = 1 ] && h=0.125
   "$root/scripts/thick_cylinder_study.sh" "$res/thick-cylinder" $h &&
     $py "$root/scripts/plot_thick_cylinder.py" "$res/thick-cylinder" "$figs/thick_cylinder.png"
+}
+
+part_strip_footing() {
+  local h=""
+  [ "$quick" = 1 ] && h=0.25
+  "$root/scripts/strip_footing_study.sh" "$res/strip-footing" $h &&
+    $py "$root/scripts/plot_strip_footing.py" "$res/strip-footing" "$figs/strip_footing.png"
 }
 
 part_convecting_bar() {
