@@ -29,6 +29,8 @@
 #   water_column    scripts/water_column_study.sh + plot (section 6) 1.8 min
 #   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static
 #                   (doc/implicit.md)                               2.5 min
+#   thick_cylinder_implicit  scripts/thick_cylinder_implicit.sh + plot,
+#                   quasi-static (doc/implicit.md)                  35 s
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
 # Full suite: 71 minutes. QUICK=1 (coarse grids, short runs, few
@@ -43,7 +45,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 py=/usr/bin/python3
@@ -136,6 +138,14 @@ part_thick_cylinder() {
   [ "$quick" = 1 ] && h=0.125
   "$root/scripts/thick_cylinder_study.sh" "$res/thick-cylinder" $h &&
     $py "$root/scripts/plot_thick_cylinder.py" "$res/thick-cylinder" "$figs/thick_cylinder.png"
+}
+
+part_thick_cylinder_implicit() {
+  local h=""
+  [ "$quick" = 1 ] && h=0.125
+  mkdir -p "$res/thick-cylinder-implicit" &&
+    "$root/scripts/thick_cylinder_implicit.sh" $h > "$res/thick-cylinder-implicit/table.md" &&
+    $py "$root/scripts/plot_thick_cylinder_implicit.py" "$res/thick-cylinder-implicit/table.md" "$figs/thick_cylinder_implicit.png"
 }
 
 part_strip_footing() {
