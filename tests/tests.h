@@ -9,6 +9,7 @@
 #include <mpm/parameters/parameters.h>
 #include <mpm/solver/simulator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -38,6 +39,18 @@ namespace mpm_test
       simulator->setup();
     }
   };
+
+  /// The value of the integrator's statistics column @p name
+  /// (Simulator::integrator_columns()) after the last step.
+  template <int dim>
+  double
+  integrator_value(const mpm::Simulator<dim> &sim, const std::string &name)
+  {
+    const auto columns = sim.integrator_columns();
+    return sim
+      .integrator_values()[std::find(columns.begin(), columns.end(), name) -
+                           columns.begin()];
+  }
 
   /// Output stream that writes on rank 0 only.
   inline std::ofstream &

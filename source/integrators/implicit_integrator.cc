@@ -163,6 +163,8 @@ namespace mpm
         state.background.initialize_vector(increment, dim);
         state.background.initialize_vector(internal_force, dim);
         state.background.initialize_vector(external_force, dim);
+        if (!rigid_bodies.empty())
+          state.background.initialize_vector(rigid_mass, rigid_bodies.size());
       }
     // Sub-steps: halved when Newton fails, doubled again (up to dt) when
     // it converges in few iterations.
@@ -272,7 +274,6 @@ namespace mpm
     std::vector<int> rigid_index(state.bodies.size(), -1);
     for (unsigned int r = 0; r < n_r; ++r)
       rigid_index[rigid_bodies[r]] = r;
-    grid.initialize_vector(rigid_mass, n_r);
     rigid_mass                            = 0.;
     double                             *m = rigid_mass.begin();
     shape_functions::CellQ1Weights<dim> weights(grid, nullptr);
@@ -345,11 +346,23 @@ namespace mpm
     const auto  &p = state.params.implicit;
     NewtonResult result;
     Residual     r;
-    if (!assemble(t, dt, true, r, result.error))
+    // With prescribed motion the predictor assembles its own matrix: the
+    // first assembly gives only the residual at the start.
+    const bool predict = system.has_prescribed_motion();
+    if (!assemble(t, dt, !predict, r, result.error))
       return result;
     TrilinosWrappers::MPI::Vector delta;
-    double                        first_energy = 0;
-    const auto                    relative     = [](const Residual &r) {
+    // One linear solve into delta; false (and the error set) if it fails.
+    const auto solve = [&]() {
+      TimerOutput::Scope timer(state.timer, "implicit linear solve");
+      const auto         solved =
+        system.solve(state.background, p, linear_solver, delta);
+      result.linear_iterations += solved.iterations;
+      result.error = solved.error;
+      return solved.error.empty();
+    };
+    double     first_energy = 0;
+    const auto relative     = [](const Residual &r) {
       return r.reference > 0 ? r.norm / r.reference : r.norm;
     };
     const auto small_residual = [&p](const Residual &r) {
@@ -357,7 +370,7 @@ namespace mpm
              r.norm <= p.absolute_residual_tolerance;
     };
     result.residuals.push_back(relative(r));
-    if (system.has_prescribed_motion())
+    if (predict)
       {
         // Predictor: the rigid bodies' motion as the values of their
         // nodes in a linear solve with the tangent at the start, so the
@@ -365,22 +378,11 @@ namespace mpm
         // their nodes alone would crush the cells between).
         system.prescribe_motion(true);
         Residual   with_motion;
-        const bool assembled = assemble(t, dt, true, with_motion, result.error);
-        typename NodalLinearSystem<dim>::SolveResult solved;
-        if (assembled)
-          {
-            TimerOutput::Scope timer(state.timer, "implicit linear solve");
-            solved = system.solve(state.background, p, linear_solver, delta);
-          }
+        const bool solved =
+          assemble(t, dt, true, with_motion, result.error) && solve();
         system.prescribe_motion(false);
-        if (!assembled)
+        if (!solved)
           return result;
-        result.linear_iterations += solved.iterations;
-        if (!solved.error.empty())
-          {
-            result.error = solved.error;
-            return result;
-          }
         ++result.iterations;
         first_energy = std::abs(delta * system.right_hand_side());
         add_to_increment(delta, 1.);
@@ -406,17 +408,8 @@ namespace mpm
                            std::to_string(p.max_iterations) + " iterations";
             return result;
           }
-        {
-          TimerOutput::Scope timer(state.timer, "implicit linear solve");
-          const auto         solved =
-            system.solve(state.background, p, linear_solver, delta);
-          result.linear_iterations += solved.iterations;
-          if (!solved.error.empty())
-            {
-              result.error = solved.error;
-              return result;
-            }
-        }
+        if (!solve())
+          return result;
         ++result.iterations;
         const double energy = std::abs(delta * system.right_hand_side());
         if (first_energy == 0)
@@ -668,7 +661,8 @@ namespace mpm
                       f_ext[nodes[a] * dim + i] += S_face[a] * traction[i];
                     }
               }
-            if (!with_matrix)
+            // (a rigid body adds no stiffness)
+            if (!with_matrix || state.bodies[b].is_rigid())
               continue;
 
             // K_ai,bk = V_n (dP / du_bk) G_a. With smoothing, u_bk also

@@ -65,26 +65,26 @@ namespace mpm
     template <int dim>
     void
     LinearizedCellSmoothing<dim>::material_increment(
-      const Point    &p,
+      Point          &p,
       const bool      total,
       Tensor<2, dim> &h_rate,
       Tensor<2, dim> &F_bar,
       Tensor<2, dim> &h_eff) const
     {
+      // The explicit update's smoothing, with h = dt L for the rate.
       const Sums  &s     = sums[p.body];
       const double J     = determinant(p.F);
-      const double alpha = std::pow(s.V / s.V0 / J, 1. / dim);
-      F_bar              = alpha * p.F;
+      const double J_bar = s.V / s.V0;
       h_rate             = p.h;
-      const double l     = (s.V_n_tr_h / s.V_n - trace(p.h)) / dim;
-      for (unsigned int d = 0; d < dim; ++d)
-        h_rate[d][d] += l;
+      F_bar              = p.F;
+      smooth_volume_change<dim>(h_rate, F_bar, J, J_bar, s.V_n_tr_h / s.V_n);
+      p.alpha = std::pow(J_bar / J, 1. / dim);
       if (!total)
         {
           h_eff = h_rate;
           return;
         }
-      h_eff = alpha * p.f;
+      h_eff = p.alpha * p.f;
       for (unsigned int d = 0; d < dim; ++d)
         h_eff[d][d] -= 1.;
     }
@@ -110,12 +110,10 @@ namespace mpm
       // d(alpha f) = alpha e_k (x) G_b + f d alpha, with
       // d alpha / alpha = (d J_bar / J_bar - d J / J) / d,
       // d J / J = (f^-T G_b)_k and d J_bar / J_bar = sum V f^-T G_b / sum V.
-      const double J       = determinant(p.F);
-      const double alpha   = std::pow(s.V / s.V0 / J, 1. / dim);
       const double dJ_J    = (transpose(p.f_inv) * p.G[b])[k];
-      const double d_alpha = alpha * (s.V_g[b][k] / s.V - dJ_J) / dim;
+      const double d_alpha = p.alpha * (s.V_g[b][k] / s.V - dJ_J) / dim;
       d                    = d_alpha * p.f;
-      d[k] += alpha * p.G[b];
+      d[k] += p.alpha * p.G[b];
       return d;
     }
 

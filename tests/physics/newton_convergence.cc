@@ -85,20 +85,15 @@ main(int argc, char **argv)
 subsection Output
   set Directory = results
 end)");
-  auto                                    &sim     = *c.simulator;
-  const auto                               columns = sim.integrator_columns();
-  const auto column = [&](const std::string &name) {
-    return std::find(columns.begin(), columns.end(), name) - columns.begin();
-  };
-  std::vector<double> rates;
-  unsigned int        most_iterations = 0;
+  auto                                    &sim = *c.simulator;
+  std::vector<double>                      rates;
+  unsigned int                             most_iterations = 0;
   while (sim.time() < 1 - 1e-9)
     {
       sim.do_time_step(0.05);
-      const auto v = sim.integrator_values();
-      rates.push_back(v[column("convergence_rate")]);
-      most_iterations =
-        std::max<unsigned int>(most_iterations, v[column("newton_iterations")]);
+      rates.push_back(mpm_test::integrator_value(sim, "convergence_rate"));
+      most_iterations = std::max<unsigned int>(
+        most_iterations, mpm_test::integrator_value(sim, "newton_iterations"));
     }
   std::sort(rates.begin(), rates.end());
   mpm_test::check(most_iterations <= 4,
@@ -133,11 +128,14 @@ end)");
     for (unsigned int k = 0; k < n_steps; ++k)
       {
         cook.simulator->do_time_step(step);
-        const auto v = cook.simulator->integrator_values();
-        if (v[column("newton_iterations")] >= min_iterations)
+        const auto &run = *cook.simulator;
+        if (mpm_test::integrator_value(run, "newton_iterations") >=
+            min_iterations)
           {
             ++counted;
-            slowest = std::min(slowest, v[column("convergence_rate")]);
+            slowest =
+              std::min(slowest,
+                       mpm_test::integrator_value(run, "convergence_rate"));
           }
       }
     return std::make_pair(slowest, counted);

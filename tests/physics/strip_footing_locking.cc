@@ -42,13 +42,10 @@ subsection Bodies
   end
 end)",
                         2);
-    auto             &sim     = *c.simulator;
-    const auto        columns = sim.integrator_columns();
-    const auto        column =
-      std::find(columns.begin(), columns.end(), "reaction_y") - columns.begin();
+    auto             &sim = *c.simulator;
     for (unsigned int step = 0; step < 10; ++step)
       sim.do_time_step(0.01);
-    return -2 * sim.integrator_values()[column] / 1e4;
+    return -2 * mpm_test::integrator_value(sim, "reaction_y") / 1e4;
   }
 } // namespace
 

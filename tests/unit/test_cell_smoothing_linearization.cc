@@ -119,6 +119,9 @@ namespace
             const Tensor<2, dim> fd =
               (h_eff(plus, q) - h_eff(minus, q)) / (2 * eps);
             cell.evaluate(u, smoothing);
+            Tensor<2, dim> h_rate, F_bar, h;
+            smoothing.material_increment(
+              cell.points[q], total, h_rate, F_bar, h);
             const Tensor<2, dim> exact =
               smoothing.derivative(cell.points[q], total, b, k);
             error   = std::max(error, (fd - exact).norm());

@@ -41,6 +41,8 @@ namespace mpm
         dealii::Tensor<2, dim>        h, f, f_inv, F;
         double                        j, V_n, V0;
         const dealii::Tensor<1, dim> *G; ///< grad N_a(x_p^n), the cell's nv
+        /// F-bar's (J_bar/J)^(1/d), set by material_increment()
+        double alpha = 1;
       };
 
       explicit LinearizedCellSmoothing(const std::vector<Body<dim>> &bodies);
@@ -74,10 +76,11 @@ namespace mpm
        * The kinematics the material sees, as in the explicit update:
        * @p h_rate = dt L_bar (rate form) and @p F_bar (total form); and
        * @p h_eff, the increment whose derivative derivative() gives:
-       * h_rate for a rate model, alpha f - I for a total one.
+       * h_rate for a rate model, alpha f - I for a total one. Sets
+       * p.alpha, which derivative() uses.
        */
       void
-      material_increment(const Point            &p,
+      material_increment(Point                  &p,
                          const bool              total,
                          dealii::Tensor<2, dim> &h_rate,
                          dealii::Tensor<2, dim> &F_bar,
