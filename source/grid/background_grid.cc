@@ -250,6 +250,50 @@ namespace mpm
             constraints.push_back(c);
           }
       }
+    take_owners_constraints();
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::take_owners_constraints()
+  {
+    // A ghost node that no owned cell touches may miss walls of cells
+    // beyond the ghost layer; its owner sees them all. The implicit step
+    // condenses the constraints of every node its particles reach, so all
+    // ranks need the owner's (also where the sums of merged normals differ
+    // by round-off between ranks).
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return;
+    constexpr unsigned int nc = 1 + dim * dim;
+    NodalVector            data;
+    initialize_vector(data, nc);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        const auto c = constraint_of_node[i];
+        if (c == numbers::invalid_unsigned_int)
+          continue;
+        data.local_element(i * nc) = constraints[c].n_normals;
+        for (unsigned int k = 0; k < constraints[c].n_normals; ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            data.local_element(i * nc + 1 + k * dim + d) =
+              constraints[c].normals[k][d];
+      }
+    data.update_ghost_values();
+    for (unsigned int i = n_owned; i < n_owned + n_ghost; ++i)
+      {
+        NodeConstraint c;
+        c.n_normals = static_cast<unsigned int>(data.local_element(i * nc));
+        for (unsigned int k = 0; k < c.n_normals; ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            c.normals[k][d] = data.local_element(i * nc + 1 + k * dim + d);
+        if (c.n_normals == 0)
+          constraint_of_node[i] = numbers::invalid_unsigned_int;
+        else
+          {
+            constraint_of_node[i] = constraints.size();
+            constraints.push_back(c);
+          }
+      }
   }
 
   template <int dim>

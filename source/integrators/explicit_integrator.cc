@@ -204,16 +204,7 @@ namespace mpm
   void
   ExplicitIntegrator<dim>::update_stress(const double dt)
   {
-    TimerOutput::Scope t(state.timer, "stress update");
-    const auto         r = ::mpm::update_stress(state.background,
-                                        state.particle_handler,
-                                        state.bodies,
-                                        state.kinematics,
-                                        dt,
-                                        &state.volume_sums,
-                                        state.domain_functions.get());
-    state.stable_dt      = r.stable_time_step;
-    state.local_error.record(r.error);
+    state.stable_dt = state.update_particle_stress(dt);
   }
 
   template <int dim>

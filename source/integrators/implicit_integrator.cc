@@ -6,8 +6,7 @@
 #include <mpm/integrators/implicit_integrator.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
-#include <mpm/shape_functions/cell_q1_weights.h>
-#include <mpm/solver/stress_update.h>
+#include <mpm/shape_functions/family_registry.h>
 #include <mpm/transfer/grid_to_particle.h>
 #include <mpm/transfer/particle_to_grid.h>
 #include <mpm/utilities/input_error.h>
@@ -25,15 +24,9 @@ namespace mpm
     : TimeIntegrator<dim>(s)
     , smoothing(std::make_unique<Smoothing>(s.bodies))
   {
-    using LinearSolver = Parameters::ImplicitSolver::LinearSolver;
-    const auto &p      = state.params;
-    if (p.shape_functions.family != shape_functions::Family::standard)
-      throw InputError(
-        std::string(
-          "Time stepping/Integrator = quasi-static: Shape functions/Family = ") +
-        shape_functions::family_name(p.shape_functions.family) +
-        " has no implicit form yet; use standard");
-    bool symmetric = true;
+    using LinearSolver    = Parameters::ImplicitSolver::LinearSolver;
+    const auto &p         = state.params;
+    bool        symmetric = true;
     for (unsigned int b = 0; b < state.bodies.size(); ++b)
       {
         // (the remedies refuse the integrator themselves)
@@ -58,8 +51,11 @@ namespace mpm
                     !smoothing->smooths(b);
       }
     for (unsigned int b = 0; b < state.bodies.size(); ++b)
-      if (state.bodies[b].is_rigid())
-        rigid_bodies.push_back(b);
+      {
+        if (state.bodies[b].is_rigid())
+          rigid_bodies.push_back(b);
+        has_body_force.push_back(state.bodies[b].has_body_force());
+      }
     linear_solver = p.implicit.linear_solver;
     if (linear_solver == LinearSolver::automatic)
       linear_solver = symmetric ? LinearSolver::cg : LinearSolver::gmres;
@@ -89,13 +85,15 @@ namespace mpm
   void
   ImplicitIntegrator<dim>::compute_nodal_fields()
   {
-    const transfer::P2GContext<dim> context{
-      {state.background, state.particle_handler, nullptr, 0},
-      state.bodies,
-      *state.stress_filter,
-      state.current_time,
-      transfer::P2GContent::mass_momentum,
-      state.p2g};
+    const transfer::P2GContext<dim> context{{state.background,
+                                             state.particle_handler,
+                                             state.domain_functions.get(),
+                                             0},
+                                            state.bodies,
+                                            *state.stress_filter,
+                                            state.current_time,
+                                            transfer::P2GContent::mass_momentum,
+                                            state.p2g};
     state.local_error.record(transfer::particle_to_grid(context));
     state.p2g.update_ghost_values();
   }
@@ -160,6 +158,17 @@ namespace mpm
         TimerOutput::Scope t(state.timer, "implicit set-up");
         partition = state.background.node_partitioner();
         system.reinit(state.background, state.comm);
+        stencils = CellStencils<dim>(state.background.n_local_nodes());
+        // int N_a = |cell| / 2^dim from each cell at the node (exact on
+        // parallelograms)
+        state.background.initialize_vector(support, 1);
+        state.background.initialize_vector(full_support, 1);
+        for (const auto &cell : state.background.owned_cells())
+          for (unsigned int v = 0; v < BackgroundGrid<dim>::n_vertices; ++v)
+            full_support.local_element(state.background.nodes(cell)[v]) +=
+              cell->measure() / BackgroundGrid<dim>::n_vertices;
+        full_support.compress(VectorOperation::add);
+        full_support.update_ghost_values();
         state.background.initialize_vector(increment, dim);
         state.background.initialize_vector(internal_force, dim);
         state.background.initialize_vector(external_force, dim);
@@ -227,14 +236,24 @@ namespace mpm
   void
   ImplicitIntegrator<dim>::find_unknowns(const double t, const double dt)
   {
+    // The particles moved since the stencils were built (the domains'
+    // stencils of this step are those at its start).
+    if (state.domain_functions)
+      state.domain_functions->forget_stencils();
     // Nodes without mass (no particle reaches them) are not unknowns.
     compute_nodal_fields();
+    if (state.domain_functions)
+      couple_stencil_nodes();
     using P          = transfer::P2GLayout<dim>;
     const auto &grid = state.background;
+    compute_nodal_support();
+    const double fraction = state.params.implicit.min_nodal_support;
     active.assign(grid.n_local_nodes(), 0);
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
-      active[i] = state.p2g.local_element(i * P::n_components + P::mass) >
-                  state.min_nodal_mass;
+      active[i] =
+        state.p2g.local_element(i * P::n_components + P::mass) >
+          state.min_nodal_mass &&
+        support.local_element(i) >= fraction * full_support.local_element(i);
     find_prescribed_nodes();
     std::vector<Tensor<1, dim>> values(grid.n_local_nodes());
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
@@ -262,6 +281,30 @@ namespace mpm
 
   template <int dim>
   void
+  ImplicitIntegrator<dim>::compute_nodal_support()
+  {
+    using L       = ParticleLayout<dim>;
+    support       = 0.;
+    double     *V = support.begin();
+    std::string error;
+    with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
+      for (const auto &particle : pic)
+        {
+          if (!weights.evaluate(particle, false, error))
+            return false;
+          const double volume = particle.get_properties()[L::volume];
+          for (unsigned int a = 0; a < weights.size(); ++a)
+            V[weights.node(a)] += volume * weights.value(a);
+        }
+      return true;
+    });
+    state.local_error.record(error);
+    support.compress(VectorOperation::add);
+    support.update_ghost_values();
+  }
+
+  template <int dim>
+  void
   ImplicitIntegrator<dim>::find_prescribed_nodes()
   {
     const auto        &grid = state.background;
@@ -274,24 +317,24 @@ namespace mpm
     std::vector<int> rigid_index(state.bodies.size(), -1);
     for (unsigned int r = 0; r < n_r; ++r)
       rigid_index[rigid_bodies[r]] = r;
-    rigid_mass                            = 0.;
-    double                             *m = rigid_mass.begin();
-    shape_functions::CellQ1Weights<dim> weights(grid, nullptr);
-    std::string                         unused;
-    for_each_cell_with_particles(
-      grid, state.particle_handler, [&](const auto &cell, const auto &pic) {
-        weights.begin_cell(cell);
-        for (const auto &particle : pic)
-          {
-            const double *prop = particle.get_properties().data();
-            const int r = rigid_index[static_cast<unsigned int>(prop[L::body])];
-            if (r < 0)
-              continue;
-            weights.evaluate(particle, false, unused);
-            for (unsigned int a = 0; a < weights.size(); ++a)
-              m[weights.node(a) * n_r + r] += prop[L::mass] * weights.value(a);
-          }
-      });
+    rigid_mass    = 0.;
+    double     *m = rigid_mass.begin();
+    std::string error;
+    with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
+      for (const auto &particle : pic)
+        {
+          if (!weights.evaluate(particle, false, error))
+            return false;
+          const double *prop = particle.get_properties().data();
+          const int r = rigid_index[static_cast<unsigned int>(prop[L::body])];
+          if (r < 0)
+            continue;
+          for (unsigned int a = 0; a < weights.size(); ++a)
+            m[weights.node(a) * n_r + r] += prop[L::mass] * weights.value(a);
+        }
+      return true;
+    });
+    state.local_error.record(error);
     rigid_mass.compress(VectorOperation::add);
     rigid_mass.update_ghost_values();
     // A node follows the rigid body of most mass there: in its Prescribed
@@ -458,6 +501,148 @@ namespace mpm
     increment.update_ghost_values();
   }
 
+
+  template <int dim>
+  template <typename Function>
+  bool
+  ImplicitIntegrator<dim>::with_cell_weights(const Function &f)
+  {
+    bool ok = true;
+    shape_functions::with_family(
+      state.params.shape_functions.family, [&](const auto family) {
+        using Weights = typename decltype(family)::template Weights<dim>;
+        Weights weights(state.background, state.domain_functions.get());
+        weights.begin_pass(state.particle_handler.n_locally_owned_particles());
+        for_each_cell_with_particles(state.background,
+                                     state.particle_handler,
+                                     [&](const auto &cell, const auto &pic) {
+                                       if (!ok)
+                                         return;
+                                       weights.begin_cell(cell);
+                                       ok = f(cell, pic, weights);
+                                     });
+        weights.end_pass(ok);
+      });
+    return ok;
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::couple_stencil_nodes()
+  {
+    // Every node a cell's particles reach couples with every other (the
+    // volumetric smoothing's cell average couples them all).
+    stencil_groups.clear();
+    std::string error;
+    with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
+      stencils.begin_cell();
+      for (const auto &particle : pic)
+        {
+          if (!weights.evaluate(particle, true, error))
+            return false;
+          stencils.add(weights, nullptr);
+        }
+      stencil_groups.nodes.insert(stencil_groups.nodes.end(),
+                                  stencils.nodes(),
+                                  stencils.nodes() + stencils.n_nodes());
+      stencil_groups.close_group();
+      return true;
+    });
+    state.local_error.record(error);
+    system.couple(stencil_groups);
+  }
+
+  template <int dim>
+  template <typename Weights, typename Particles>
+  bool
+  ImplicitIntegrator<dim>::gather_cell(Weights         &weights,
+                                       const Particles &pic,
+                                       const double     t,
+                                       std::string     &error)
+  {
+    // The trial kinematics of the cell's particles: h = sum_a u_a (x) G_a,
+    // the step's displacement gradient with respect to the configuration
+    // at the start of the step; their loads; and the cell sums of the
+    // volumetric smoothing.
+    using L     = ParticleLayout<dim>;
+    using Point = typename Smoothing::Point;
+    stencils.begin_cell();
+    points.clear();
+    loads.clear();
+    for (const auto &particle : pic)
+      {
+        const double *prop = particle.get_properties().data();
+        if (!weights.evaluate(particle, true, error))
+          return false;
+        Point q;
+        q.body           = static_cast<unsigned int>(prop[L::body]);
+        const auto &body = state.bodies[q.body];
+        PointLoads  load;
+        body.body_force_on(particle.get_location(),
+                           prop + L::X,
+                           prop[L::mass],
+                           t,
+                           has_body_force[q.body],
+                           load.body);
+        double         S_face[Weights::n_entries];
+        Tensor<1, dim> d_face;
+        load.has_face =
+          body.has_traction() && body.traction_force_on(particle.get_location(),
+                                                        prop,
+                                                        t,
+                                                        load.traction,
+                                                        d_face);
+        if (load.has_face)
+          weights.face_values(d_face, S_face);
+        stencils.add(weights, load.has_face ? S_face : nullptr);
+        loads.push_back(load);
+        if (body.is_rigid())
+          {
+            // no strain, no stress: only its loads
+            q.j     = 1;
+            q.f     = unit_symmetric_tensor<dim>();
+            q.f_inv = q.f;
+            q.F     = q.f;
+            q.V_n   = 0;
+            points.push_back(q);
+            continue;
+          }
+        const unsigned int  p     = stencils.n_particles() - 1;
+        const unsigned int *nodes = stencils.nodes();
+        for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
+          for (unsigned int i = 0; i < dim; ++i)
+            q.h[i] +=
+              increment.local_element(nodes[stencils.node(e)] * dim + i) *
+              stencils.gradient(e);
+        q.f = unit_symmetric_tensor<dim>();
+        q.f += q.h;
+        q.j = determinant(q.f);
+        if (!(q.j > 0 && std::isfinite(q.j)))
+          {
+            std::ostringstream s;
+            s << "the trial increment inverts particle " << particle.get_id()
+              << " (det f = " << q.j << ")";
+            error = s.str();
+            return false;
+          }
+        q.f_inv = invert(q.f);
+        q.F     = q.f * load_matrix<dim>(prop + L::F);
+        q.V_n   = prop[L::volume];
+        q.V0    = prop[L::volume0];
+        points.push_back(q);
+      }
+    stencils.make_dense();
+    smoothing->reset(stencils.n_nodes());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        Point &q = points[p];
+        q.G      = stencils.dense_gradients(p);
+        if (smoothing->smooths(q.body) && !state.bodies[q.body].is_rigid())
+          smoothing->add(q);
+      }
+    return true;
+  }
+
   namespace
   {
     /**
@@ -490,6 +675,145 @@ namespace mpm
   } // namespace
 
   template <int dim>
+  template <typename Particles>
+  bool
+  ImplicitIntegrator<dim>::add_cell_system(const Particles &pic,
+                                           const double     dt,
+                                           const bool       with_matrix,
+                                           std::string     &error)
+  {
+    using L                     = ParticleLayout<dim>;
+    const unsigned int  n_nodes = stencils.n_nodes();
+    const unsigned int *nodes   = stencils.nodes();
+    const unsigned int  n       = n_nodes * dim;
+    if (with_matrix)
+      cell_matrix.reinit(n, n);
+    cell_rhs.reinit(n);
+    double *const              f_int = internal_force.begin();
+    double *const              f_ext = external_force.begin();
+    materials::PointKinematics kinematics, tangent_kinematics;
+    kinematics.dt         = dt;
+    tangent_kinematics.dt = dt;
+    unsigned int p        = 0;
+    for (const auto &particle : pic)
+      {
+        const double *prop     = particle.get_properties().data();
+        auto         &q        = points[p];
+        const auto   &load     = loads[p];
+        const auto   &body     = state.bodies[q.body];
+        const auto   &material = *body.material;
+        const bool    smoothed = smoothing->smooths(q.body);
+        const bool    total    = material.stress_from_deformation_gradient();
+
+        // What the material sees (as in the explicit stress update), and
+        // the increment its tangent is the derivative by.
+        Tensor<2, dim> h_rate = q.h, F = q.F, h_eff = q.h;
+        if (smoothed)
+          smoothing->material_increment(q, total, h_rate, F, h_eff);
+        kinematics.velocity_gradient         = embed<dim>(h_rate / dt, 0.);
+        kinematics.F                         = embed<dim>(F, 1.);
+        tangent_kinematics.velocity_gradient = embed<dim>(h_eff / dt, 0.);
+        tangent_kinematics.F                 = kinematics.F;
+
+        const SymmetricTensor<2, 3> stress_n = load_stress(prop + L::stress);
+        SymmetricTensor<2, 3>       sigma    = stress_n;
+        history_scratch.assign(prop + L::history,
+                               prop + L::history + material.n_history());
+        try
+          {
+            material.update_stress(kinematics,
+                                   sigma,
+                                   ArrayView<double>(history_scratch));
+          }
+        catch (const std::exception &e)
+          {
+            error = "the material of particle " +
+                    std::to_string(particle.get_id()) + " failed: " + e.what();
+            return false;
+          }
+        Tensor<2, dim> s; // in-plane Cauchy stress
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int k = 0; k < dim; ++k)
+            s[i][k] = sigma[i][k];
+        // First Piola-Kirchhoff stress with respect to the start of the
+        // step, P = j sigma f^-T: f_int,a = V_n P G_a.
+        const Tensor<2, dim> P = q.j * s * transpose(q.f_inv);
+        for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
+          {
+            const unsigned int   a  = stencils.node(e);
+            const Tensor<1, dim> fa = q.V_n * (P * stencils.gradient(e));
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                const double ext = stencils.value(e) * load.body[i];
+                cell_rhs(a * dim + i) += ext - fa[i];
+                f_int[nodes[a] * dim + i] += fa[i];
+                f_ext[nodes[a] * dim + i] += ext;
+              }
+          }
+        if (load.has_face)
+          for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                const unsigned int a = stencils.node(e);
+                const double       f = stencils.face(e) * load.traction[i];
+                cell_rhs(a * dim + i) += f;
+                f_ext[nodes[a] * dim + i] += f;
+              }
+        // (a rigid body adds no stiffness)
+        if (!with_matrix || body.is_rigid())
+          {
+            ++p;
+            continue;
+          }
+
+        // K_ai,bk = V_n (dP / du_bk) G_a. With smoothing, u_bk also
+        // changes the other particles' share of the cell average, so
+        // every node of the cell's list has a column.
+        Tensor<4, 3> T;
+        material.stress_tangent(tangent_kinematics,
+                                stress_n,
+                                ArrayView<const double>(prop + L::history,
+                                                        material.n_history()),
+                                T);
+        for (unsigned int b = 0; b < n_nodes; ++b)
+          {
+            if (!smoothed && !stencils.reaches(p, b))
+              continue;
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                Tensor<2, dim> dh;
+                dh[k] = q.G[b];
+                const Tensor<2, dim> dP =
+                  first_piola_change(s,
+                                     q.j,
+                                     q.f_inv,
+                                     T,
+                                     dh,
+                                     smoothed ?
+                                       smoothing->derivative(q, total, b, k) :
+                                       dh);
+                for (unsigned int e = stencils.begin(p); e < stencils.end(p);
+                     ++e)
+                  {
+                    const unsigned int   a = stencils.node(e);
+                    const Tensor<1, dim> column =
+                      q.V_n * (dP * stencils.gradient(e));
+                    for (unsigned int i = 0; i < dim; ++i)
+                      cell_matrix(a * dim + i, b * dim + k) += column[i];
+                  }
+              }
+          }
+        ++p;
+      }
+    system.node_indices(nodes, n_nodes, cell_dofs);
+    if (with_matrix)
+      system.add_cell(cell_matrix, cell_rhs, cell_dofs);
+    else
+      system.add_cell_rhs(cell_rhs, cell_dofs);
+    return true;
+  }
+
+  template <int dim>
   bool
   ImplicitIntegrator<dim>::assemble(const double t,
                                     const double dt,
@@ -498,207 +822,13 @@ namespace mpm
                                     std::string &error)
   {
     TimerOutput::Scope timer(state.timer, "implicit assembly");
-    using L                     = ParticleLayout<dim>;
-    using Point                 = typename Smoothing::Point;
-    constexpr unsigned int nv   = shape_functions::n_q1<dim>;
-    constexpr unsigned int n    = nv * dim;
-    const auto            &grid = state.background;
     system.begin_assembly(with_matrix);
-    internal_force      = 0.;
-    external_force      = 0.;
-    double *const f_int = internal_force.begin();
-    double *const f_ext = external_force.begin();
-
-    std::vector<char> loaded(state.bodies.size());
-    for (unsigned int b = 0; b < state.bodies.size(); ++b)
-      loaded[b] = state.bodies[b].has_body_force();
-
-    shape_functions::CellQ1Weights<dim>  weights(grid, nullptr);
-    FullMatrix<double>                   cell_matrix(n, n);
-    Vector<double>                       cell_rhs(n);
-    std::vector<types::global_dof_index> indices;
-    materials::PointKinematics           kinematics, tangent_kinematics;
-    kinematics.dt         = dt;
-    tangent_kinematics.dt = dt;
-    bool ok               = true;
-
-    for_each_cell_with_particles(
-      grid, state.particle_handler, [&](const auto &cell, const auto &pic) {
-        if (!ok)
-          return;
-        weights.begin_cell(cell);
-        const unsigned int *nodes = grid.nodes(cell);
-
-        // The trial kinematics of the cell's particles: h = sum_a u_a (x)
-        // G_a, the step's displacement gradient with respect to the
-        // configuration at the start of the step; and the cell sums of
-        // the volumetric smoothing.
-        points.clear();
-        smoothing->reset();
-        for (const auto &particle : pic)
-          {
-            const double *prop = particle.get_properties().data();
-            weights.evaluate(particle, true, error);
-            Point q;
-            q.body = static_cast<unsigned int>(prop[L::body]);
-            if (state.bodies[q.body].is_rigid())
-              {
-                // no strain, no stress: only its loads (pass 2)
-                q.j     = 1;
-                q.f     = unit_symmetric_tensor<dim>();
-                q.f_inv = q.f;
-                q.F     = q.f;
-                q.V_n   = 0;
-                points.push_back(q);
-                continue;
-              }
-            for (unsigned int a = 0; a < nv; ++a)
-              for (unsigned int i = 0; i < dim; ++i)
-                q.h[i] += increment.local_element(nodes[a] * dim + i) *
-                          weights.gradient(a);
-            q.f = unit_symmetric_tensor<dim>();
-            q.f += q.h;
-            q.j = determinant(q.f);
-            if (!(q.j > 0 && std::isfinite(q.j)))
-              {
-                std::ostringstream s;
-                s << "the trial increment inverts particle "
-                  << particle.get_id() << " (det f = " << q.j << ")";
-                error = s.str();
-                ok    = false;
-                return;
-              }
-            q.f_inv = invert(q.f);
-            q.F     = q.f * load_matrix<dim>(prop + L::F);
-            q.V_n   = prop[L::volume];
-            q.V0    = prop[L::volume0];
-            q.G     = &weights.gradient(0);
-            if (smoothing->smooths(q.body))
-              smoothing->add(q);
-            points.push_back(q);
-          }
-
-        cell_matrix        = 0.;
-        cell_rhs           = 0.;
-        unsigned int index = 0;
-        for (const auto &particle : pic)
-          {
-            const double *prop = particle.get_properties().data();
-            weights.evaluate(particle, true, error);
-            Point &q                    = points[index++];
-            q.G                         = &weights.gradient(0);
-            const unsigned int b        = q.body;
-            const auto        &material = *state.bodies[b].material;
-            const bool         smoothed = smoothing->smooths(b);
-            const bool total = material.stress_from_deformation_gradient();
-
-            // What the material sees (as in the explicit stress update),
-            // and the increment its tangent is the derivative by.
-            Tensor<2, dim> h_rate = q.h, F = q.F, h_eff = q.h;
-            if (smoothed)
-              smoothing->material_increment(q, total, h_rate, F, h_eff);
-            kinematics.velocity_gradient         = embed<dim>(h_rate / dt, 0.);
-            kinematics.F                         = embed<dim>(F, 1.);
-            tangent_kinematics.velocity_gradient = embed<dim>(h_eff / dt, 0.);
-            tangent_kinematics.F                 = kinematics.F;
-
-            const SymmetricTensor<2, 3> stress_n =
-              load_stress(prop + L::stress);
-            SymmetricTensor<2, 3> sigma = stress_n;
-            history_scratch.assign(prop + L::history,
-                                   prop + L::history + material.n_history());
-            try
-              {
-                material.update_stress(kinematics,
-                                       sigma,
-                                       ArrayView<double>(history_scratch));
-              }
-            catch (const std::exception &e)
-              {
-                error = "the material of particle " +
-                        std::to_string(particle.get_id()) +
-                        " failed: " + e.what();
-                ok = false;
-                return;
-              }
-            Tensor<2, dim> s; // in-plane Cauchy stress
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int k = 0; k < dim; ++k)
-                s[i][k] = sigma[i][k];
-            // First Piola-Kirchhoff stress with respect to the start of the
-            // step, P = j sigma f^-T: f_int,a = V_n P G_a.
-            const Tensor<2, dim> P = q.j * s * transpose(q.f_inv);
-            double               ext[dim];
-            state.bodies[b].body_force_on(particle.get_location(),
-                                          prop + L::X,
-                                          prop[L::mass],
-                                          t,
-                                          loaded[b],
-                                          ext);
-            for (unsigned int a = 0; a < nv; ++a)
-              {
-                const Tensor<1, dim> fa = q.V_n * (P * weights.gradient(a));
-                for (unsigned int i = 0; i < dim; ++i)
-                  {
-                    const double e = weights.value(a) * ext[i];
-                    cell_rhs(a * dim + i) += e - fa[i];
-                    f_int[nodes[a] * dim + i] += fa[i];
-                    f_ext[nodes[a] * dim + i] += e;
-                  }
-              }
-            double         traction[dim];
-            Tensor<1, dim> d_face;
-            if (state.bodies[b].has_traction() &&
-                state.bodies[b].traction_force_on(
-                  particle.get_location(), prop, t, traction, d_face))
-              {
-                double S_face[nv];
-                weights.face_values(d_face, S_face);
-                for (unsigned int a = 0; a < nv; ++a)
-                  for (unsigned int i = 0; i < dim; ++i)
-                    {
-                      cell_rhs(a * dim + i) += S_face[a] * traction[i];
-                      f_ext[nodes[a] * dim + i] += S_face[a] * traction[i];
-                    }
-              }
-            // (a rigid body adds no stiffness)
-            if (!with_matrix || state.bodies[b].is_rigid())
-              continue;
-
-            // K_ai,bk = V_n (dP / du_bk) G_a. With smoothing, u_bk also
-            // changes the other particles' share of the cell average.
-            Tensor<4, 3> T;
-            material.stress_tangent(
-              tangent_kinematics,
-              stress_n,
-              ArrayView<const double>(prop + L::history, material.n_history()),
-              T);
-            for (unsigned int bb = 0; bb < nv; ++bb)
-              for (unsigned int k = 0; k < dim; ++k)
-                {
-                  Tensor<2, dim> dh;
-                  dh[k]                   = weights.gradient(bb);
-                  const Tensor<2, dim> dP = first_piola_change(
-                    s,
-                    q.j,
-                    q.f_inv,
-                    T,
-                    dh,
-                    smoothed ? smoothing->derivative(q, total, bb, k) : dh);
-                  for (unsigned int a = 0; a < nv; ++a)
-                    {
-                      const Tensor<1, dim> column =
-                        q.V_n * (dP * weights.gradient(a));
-                      for (unsigned int i = 0; i < dim; ++i)
-                        cell_matrix(a * dim + i, bb * dim + k) += column[i];
-                    }
-                }
-          }
-        system.cell_indices(nodes, indices);
-        if (with_matrix)
-          system.add_cell(cell_matrix, cell_rhs, indices);
-        else
-          system.add_cell_rhs(cell_rhs, indices);
+    internal_force = 0.;
+    external_force = 0.;
+    const bool ok =
+      with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
+        return gather_cell(weights, pic, t, error) &&
+               add_cell_system(pic, dt, with_matrix, error);
       });
     // Every rank takes part in the exchanges, whatever happened here.
     system.finish_assembly(with_matrix);
@@ -733,16 +863,6 @@ namespace mpm
           state.kinematics.local_element(i * K::n_components + K::increment +
                                          c) = 0.;
         }
-    {
-      TimerOutput::Scope timer(state.timer, "stress update");
-      const auto         r = ::mpm::update_stress(grid,
-                                          state.particle_handler,
-                                          state.bodies,
-                                          state.kinematics,
-                                          dt,
-                                          &state.volume_sums);
-      state.local_error.record(r.error);
-    }
     // A rigid body moves as prescribed, not with the grid.
     using L = ParticleLayout<dim>;
     std::vector<Point<dim>> rigid_start;
@@ -751,15 +871,19 @@ namespace mpm
         if (state.bodies[static_cast<unsigned int>(p.get_properties()[L::body])]
               .is_rigid())
           rigid_start.push_back(p.get_location());
+    // G2P and the stress update see the domains of the start of the step
+    // (the stress update changes F, from which cpGIMP and CPDI take them).
     {
       TimerOutput::Scope timer(state.timer, "G2P");
-      state.local_error.record(transfer::grid_to_particle(
-        transfer::G2PContext<dim>{{grid, state.particle_handler, nullptr, 0},
-                                  state.kinematics,
-                                  dt,
-                                  1.,
-                                  nullptr}));
+      state.local_error.record(
+        transfer::grid_to_particle(transfer::G2PContext<dim>{
+          {grid, state.particle_handler, state.domain_functions.get(), 0},
+          state.kinematics,
+          dt,
+          1.,
+          nullptr}));
     }
+    state.update_particle_stress(dt);
     if (!rigid_bodies.empty())
       {
         std::vector<Tensor<1, dim>> u(state.bodies.size());
@@ -778,6 +902,14 @@ namespace mpm
           }
       }
     TimerOutput::Scope timer(state.timer, "position update");
+    if (shape_functions::family_traits(state.params.shape_functions.family)
+          .tracks_corners)
+      state.local_error.record(
+        transfer::move_domain_corners(grid,
+                                      state.particle_handler,
+                                      state.kinematics,
+                                      dt,
+                                      *state.domain_functions));
     state.relocate_moved_particles();
   }
 

@@ -68,6 +68,17 @@ namespace mpm
                         Integer(1),
                         "Iterations before the linear solver fails (the "
                         "step is then cut).");
+      prm.declare_entry(
+        "Minimum nodal support",
+        "1e-4",
+        Double(0, 1),
+        "A node is an unknown only where the particles cover at least this "
+        "fraction of its support: sum_p S_ap V_p >= fraction * int N_a. A "
+        "node that a domain family's particle reaches with a sliver of its "
+        "domain has a stiffness of the order of that sliver; left free, it "
+        "takes displacements of thousands of cell sizes in the Newton "
+        "direction and Newton fails. Such a node is held instead (its "
+        "weights at the particles are of the same order).");
       prm.leave_subsection();
     }
 
@@ -89,6 +100,7 @@ namespace mpm
                                               LinearSolver::automatic;
       linear_tolerance      = prm.get_double("Linear tolerance");
       max_linear_iterations = prm.get_integer("Maximum linear iterations");
+      min_nodal_support     = prm.get_double("Minimum nodal support");
       prm.leave_subsection();
       if (!(residual_tolerance > 0) && !(absolute_residual_tolerance > 0))
         throw InputError("Implicit solver: Residual tolerance and Absolute "

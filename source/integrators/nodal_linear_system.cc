@@ -43,14 +43,35 @@ namespace mpm
       }
     relevant.compress();
 
-    DynamicSparsityPattern dsp(relevant);
-    std::vector<Index>     indices;
+    NodeGroups cells;
     for (const auto &cell : grid.owned_cells())
       {
-        cell_indices(grid.nodes(cell), indices);
+        cells.nodes.insert(cells.nodes.end(),
+                           grid.nodes(cell),
+                           grid.nodes(cell) + BackgroundGrid<dim>::n_vertices);
+        cells.close_group();
+      }
+    couple(cells);
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::couple(const NodeGroups &groups)
+  {
+    DynamicSparsityPattern dsp(relevant);
+    std::vector<Index>     indices;
+    for (unsigned int g = 0; g + 1 < groups.start.size(); ++g)
+      {
+        node_indices(groups.nodes.data() + groups.start[g],
+                     groups.start[g + 1] - groups.start[g],
+                     indices);
         for (const Index row : indices)
           dsp.add_entries(row, indices.begin(), indices.end());
       }
+    // Rows that no group reaches (constrained) get their diagonal in
+    // finish_assembly().
+    for (const Index k : owned)
+      dsp.add(k, k);
     SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
     matrix.reinit(owned, owned, dsp, comm);
     rhs.reinit(owned, comm);
@@ -58,12 +79,12 @@ namespace mpm
 
   template <int dim>
   void
-  NodalLinearSystem<dim>::cell_indices(const unsigned int *nodes,
+  NodalLinearSystem<dim>::node_indices(const unsigned int *nodes,
+                                       const unsigned int  n,
                                        std::vector<Index> &indices) const
   {
-    constexpr unsigned int nv = BackgroundGrid<dim>::n_vertices;
-    indices.resize(nv * dim);
-    for (unsigned int v = 0; v < nv; ++v)
+    indices.resize(n * dim);
+    for (unsigned int v = 0; v < n; ++v)
       for (unsigned int c = 0; c < dim; ++c)
         indices[v * dim + c] = node_to_global[nodes[v]] + c;
   }
@@ -92,68 +113,62 @@ namespace mpm
       node_constraints.add_entry(k, l, w);
       prescribed_motion.add_entry(k, l, w);
     };
-    std::vector<char> done(grid.n_local_nodes(), 0);
-    for (const auto &cell : grid.owned_cells())
-      for (unsigned int v = 0; v < BackgroundGrid<dim>::n_vertices; ++v)
-        {
-          const unsigned int i = grid.nodes(cell)[v];
-          if (done[i])
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      {
+        const Index        first = node_to_global[i];
+        const unsigned int m     = grid.n_constrained_directions(i);
+        if (!active[i] || m == dim)
+          {
+            prescribed[i] = 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              add_line(first + c, 0.);
             continue;
-          done[i]                  = 1;
-          const Index        first = node_to_global[i];
-          const unsigned int m     = grid.n_constrained_directions(i);
-          if (!active[i] || m == dim)
+          }
+        // A wall's direction wins over a rigid body's: the body's bit
+        // is cleared, the wall's constraint written instead.
+        const auto take = [&](const unsigned int c) {
+          prescribed[i] &= ~(1u << c);
+          add_line(first + c, 0.);
+        };
+        // The node moves in the walls' tangent plane. One wall of normal
+        // n: the component along n's largest entry follows the others,
+        // n_k u_k = -sum_{d != k} n_d u_d. Two walls (3D): the node moves
+        // along t = n0 x n1, the other components follow the one along
+        // t's largest entry.
+        if (m == 1)
+          {
+            const Tensor<1, dim> &n = grid.constrained_direction(i, 0);
+            unsigned int          k = 0;
+            for (unsigned int d = 1; d < dim; ++d)
+              if (std::abs(n[d]) > std::abs(n[k]))
+                k = d;
+            take(k);
+            for (unsigned int d = 0; d < dim; ++d)
+              if (d != k && n[d] != 0.)
+                add_entry(first + k, first + d, -n[d] / n[k]);
+          }
+        else if constexpr (dim == 3)
+          if (m == 2)
             {
-              prescribed[i] = 0;
-              for (unsigned int c = 0; c < dim; ++c)
-                add_line(first + c, 0.);
-              continue;
-            }
-          // A wall's direction wins over a rigid body's: the body's bit
-          // is cleared, the wall's constraint written instead.
-          const auto take = [&](const unsigned int c) {
-            prescribed[i] &= ~(1u << c);
-            add_line(first + c, 0.);
-          };
-          // The node moves in the walls' tangent plane. One wall of normal
-          // n: the component along n's largest entry follows the others,
-          // n_k u_k = -sum_{d != k} n_d u_d. Two walls (3D): the node moves
-          // along t = n0 x n1, the other components follow the one along
-          // t's largest entry.
-          if (m == 1)
-            {
-              const Tensor<1, dim> &n = grid.constrained_direction(i, 0);
-              unsigned int          k = 0;
+              const Tensor<1, dim> t =
+                cross_product_3d(grid.constrained_direction(i, 0),
+                                 grid.constrained_direction(i, 1));
+              unsigned int k = 0;
               for (unsigned int d = 1; d < dim; ++d)
-                if (std::abs(n[d]) > std::abs(n[k]))
+                if (std::abs(t[d]) > std::abs(t[k]))
                   k = d;
-              take(k);
               for (unsigned int d = 0; d < dim; ++d)
-                if (d != k && n[d] != 0.)
-                  add_entry(first + k, first + d, -n[d] / n[k]);
+                if (d != k)
+                  {
+                    take(d);
+                    if (t[d] != 0.)
+                      add_entry(first + d, first + k, t[d] / t[k]);
+                  }
             }
-          else if constexpr (dim == 3)
-            if (m == 2)
-              {
-                const Tensor<1, dim> t =
-                  cross_product_3d(grid.constrained_direction(i, 0),
-                                   grid.constrained_direction(i, 1));
-                unsigned int k = 0;
-                for (unsigned int d = 1; d < dim; ++d)
-                  if (std::abs(t[d]) > std::abs(t[k]))
-                    k = d;
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (d != k)
-                    {
-                      take(d);
-                      if (t[d] != 0.)
-                        add_entry(first + d, first + k, t[d] / t[k]);
-                    }
-              }
-          for (unsigned int c = 0; c < dim; ++c)
-            if (prescribed[i] & (1u << c))
-              add_line(first + c, values[i][c]);
-        }
+        for (unsigned int c = 0; c < dim; ++c)
+          if (prescribed[i] & (1u << c))
+            add_line(first + c, values[i][c]);
+      }
     node_constraints.close();
     prescribed_motion.close();
     bool any = false;

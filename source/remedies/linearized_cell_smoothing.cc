@@ -39,9 +39,15 @@ namespace mpm
 
     template <int dim>
     void
-    LinearizedCellSmoothing<dim>::reset()
+    LinearizedCellSmoothing<dim>::reset(const unsigned int n)
     {
-      std::fill(sums.begin(), sums.end(), Sums());
+      n_nodes = n;
+      for (Sums &s : sums)
+        {
+          s.V0 = s.V = s.V_n = s.V_n_tr_h = 0;
+          s.V_n_G.assign(n, Tensor<1, dim>());
+          s.V_g.assign(n, Tensor<1, dim>());
+        }
     }
 
     template <int dim>
@@ -55,7 +61,7 @@ namespace mpm
       s.V_n += p.V_n;
       s.V_n_tr_h += p.V_n * trace(p.h);
       const Tensor<2, dim> f_inv_T = transpose(p.f_inv);
-      for (unsigned int b = 0; b < nv; ++b)
+      for (unsigned int b = 0; b < n_nodes; ++b)
         {
           s.V_n_G[b] += p.V_n * p.G[b];
           s.V_g[b] += V * (f_inv_T * p.G[b]);

@@ -4,6 +4,7 @@
 #include <mpm/particles/particle_relocation.h>
 #include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/solver/simulation_state.h>
+#include <mpm/solver/stress_update.h>
 #include <mpm/transfer/particle_to_grid.h>
 
 namespace mpm
@@ -54,6 +55,22 @@ namespace mpm
       local_error.record(lost_messages.front() +
                          " (set Boundary conditions/Particles leaving the "
                          "grid = remove to delete such particles instead)");
+  }
+
+  template <int dim>
+  double
+  SimulationState<dim>::update_particle_stress(const double dt)
+  {
+    dealii::TimerOutput::Scope t(timer, "stress update");
+    const auto                 r = ::mpm::update_stress(background,
+                                        particle_handler,
+                                        bodies,
+                                        kinematics,
+                                        dt,
+                                        &volume_sums,
+                                        domain_functions.get());
+    local_error.record(r.error);
+    return r.stable_time_step;
   }
 
   template struct SimulationState<1>;

@@ -186,9 +186,9 @@ namespace mpm
         }
     }
 
-    /// Number of constrained directions of node i (owned or ghost;
-    /// complete at the nodes of owned cells): dim at a fixed node, one per
-    /// wall at a slip node, 0 if free.
+    /// Number of constrained directions of node i (owned or ghost, the
+    /// owner's at a ghost): dim at a fixed node, one per wall at a slip
+    /// node, 0 if free.
     unsigned int
     n_constrained_directions(const unsigned int i) const
     {
@@ -280,6 +280,11 @@ namespace mpm
       unsigned int                            n_normals = 0;
       std::array<dealii::Tensor<1, dim>, dim> normals;
     };
+
+    /// Ghost nodes get their owner's constraint (complete: the owner sees
+    /// every cell at the node).
+    void
+    take_owners_constraints();
 
     MPI_Comm                                                   comm;
     std::unique_ptr<dealii::Triangulation<dim>>                tria;

@@ -1,7 +1,10 @@
 #pragma once
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
+#include <mpm/integrators/cell_stencils.h>
 #include <mpm/integrators/nodal_linear_system.h>
 #include <mpm/integrators/time_integrator.h>
 #include <mpm/remedies/linearized_cell_smoothing.h>
@@ -25,6 +28,11 @@ namespace mpm
    * step cuts times); the halves grow back once Newton converges in few
    * iterations. The particles' F, stress and history change only with a
    * converged increment.
+   *
+   * Every shape-function family takes part: the weights of a particle are
+   * those of its domain at the start of the step (the step's cached
+   * stencils), so a domain family's tangent couples the nodes its
+   * particles reach, and the sparsity follows them every step.
    */
   template <int dim>
   class ImplicitIntegrator : public TimeIntegrator<dim>
@@ -92,6 +100,35 @@ namespace mpm
              const bool   with_matrix,
              Residual    &residual,
              std::string &error);
+    /**
+     * f(cell, particles, weights) for every owned cell with particles,
+     * with the weights of the run's family (begin_cell() done; every
+     * particle must be evaluated, in order, for the stencil cache); f
+     * returns false (and sets its error) to stop. Returns whether every
+     * call returned true.
+     */
+    template <typename Function>
+    bool
+    with_cell_weights(const Function &f);
+    /// The trial kinematics of a cell's particles at the current
+    /// increment (points, loads, stencils, the smoothing's cell sums).
+    template <typename Weights, typename Particles>
+    bool
+    gather_cell(Weights         &weights,
+                const Particles &particles,
+                const double     t,
+                std::string     &error);
+    /// A cell's residual (and tangent) from gather_cell()'s state, added
+    /// to the system and the force vectors.
+    template <typename Particles>
+    bool
+    add_cell_system(const Particles &particles,
+                    const double     dt,
+                    const bool       with_matrix,
+                    std::string     &error);
+    /// The sparsity of the nodes the domain families' stencils couple.
+    void
+    couple_stencil_nodes();
     void
     commit(const double t, const double dt);
 
@@ -101,6 +138,9 @@ namespace mpm
     rigid_displacement(const unsigned int r,
                        const double       t,
                        const double       dt) const;
+    /// support: the particles' volume at the nodes.
+    void
+    compute_nodal_support();
     /// The nodes the rigid bodies reach: prescribed, prescribed_by.
     void
     find_prescribed_nodes();
@@ -118,10 +158,13 @@ namespace mpm
     NodalLinearSystem<dim>                   system;
     /// The partition the system was built for.
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partition;
-    NodalVector               increment; ///< u, dim components per node
-    NodalVector               internal_force, external_force;
-    std::vector<char>         active; ///< per node-local index: has mass
-    NewtonResult              last;   ///< of the last sub-step
+    NodalVector increment; ///< u, dim components per node
+    NodalVector internal_force, external_force;
+    /// per node-local index: an unknown (mass, and Minimum nodal support)
+    std::vector<char> active;
+    /// sum_p S_ap V_p per node, and int N_a over the grid (its support)
+    NodalVector               support, full_support;
+    NewtonResult              last; ///< of the last sub-step
     unsigned int              last_cuts = 0;
     std::vector<double>       history_scratch;
     std::vector<unsigned int> rigid_bodies; ///< bodies of prescribed motion
@@ -135,5 +178,20 @@ namespace mpm
     /// `Volumetric smoothing = cell` of the trial increments
     std::unique_ptr<Smoothing>             smoothing;
     std::vector<typename Smoothing::Point> points; ///< of one cell
+    /// The loads of a point of the cell: body force (its nodal weight
+    /// applied per entry) and the traction on its loaded face.
+    struct PointLoads
+    {
+      double body[dim];
+      bool   has_face;
+      double traction[dim];
+    };
+    std::vector<PointLoads>                      loads; ///< of one cell
+    std::vector<char>                            has_body_force; ///< per body
+    CellStencils<dim>                            stencils; ///< of one cell
+    typename NodalLinearSystem<dim>::NodeGroups  stencil_groups; ///< per cell
+    dealii::FullMatrix<double>                   cell_matrix;
+    dealii::Vector<double>                       cell_rhs;
+    std::vector<dealii::types::global_dof_index> cell_dofs;
   };
 } // namespace mpm

@@ -30,6 +30,7 @@ namespace mpm
       LinearSolver linear_solver               = LinearSolver::automatic;
       double       linear_tolerance            = 1e-10;
       unsigned int max_linear_iterations       = 2000;
+      double       min_nodal_support           = 1e-4;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

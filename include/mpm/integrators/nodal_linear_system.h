@@ -21,8 +21,10 @@ namespace mpm
    * packed nodal vectors with dim components (global index dim g + c for
    * node g), so that a nodal vector and a Trilinos vector share their
    * locally owned entries in the same order. The sparsity couples the
-   * nodes of every owned cell (built once per partition); the constraints
-   * (fixed and slip walls, nodes without mass) are rebuilt every step.
+   * nodes of every owned cell (built once per partition), or the groups
+   * of nodes that couple() is given (the stencils of a domain family,
+   * which reach beyond the particle's cell); the constraints (fixed and
+   * slip walls, nodes without mass) are rebuilt every step.
    */
   template <int dim>
   class NodalLinearSystem
@@ -30,9 +32,35 @@ namespace mpm
   public:
     using Index = dealii::types::global_dof_index;
 
-    /// Index sets and sparsity of the grid's current partition.
+    /// Lists of nodes (node-local indices) whose unknowns couple all to
+    /// all: group g is nodes[start[g]], ..., nodes[start[g + 1] - 1].
+    struct NodeGroups
+    {
+      std::vector<unsigned int> nodes;
+      std::vector<unsigned int> start = {0};
+
+      void
+      clear()
+      {
+        nodes.clear();
+        start.assign(1, 0);
+      }
+      /// The nodes added since the last group form a group.
+      void
+      close_group()
+      {
+        start.push_back(nodes.size());
+      }
+    };
+
+    /// Index sets of the grid's current partition, and the sparsity of
+    /// its owned cells.
     void
     reinit(const BackgroundGrid<dim> &grid, const MPI_Comm comm);
+
+    /// The sparsity (and a zero matrix) of @p groups instead. Collective.
+    void
+    couple(const NodeGroups &groups);
 
     /**
      * Constraints of this step: every direction of a node whose @p active
@@ -40,8 +68,8 @@ namespace mpm
      * the others, and the directions (bits) of @p prescribed, the motion
      * of a rigid body, with the values @p values in the predictor's set.
      * A wall that constrains a direction takes it from @p prescribed (bit
-     * cleared). Only the nodes of owned cells are constrained (the rows
-     * this rank assembles).
+     * cleared). Every node this rank knows (owned and ghost) is
+     * constrained: a domain's stencil may reach any of them.
      */
     void
     build_constraints(const BackgroundGrid<dim>                 &grid,
@@ -65,9 +93,12 @@ namespace mpm
       predictor = on;
     }
 
-    /// The global indices of the unknowns of a cell's nodes, node-major.
+    /// The global indices of the unknowns of @p n nodes (node-local
+    /// indices @p nodes), node-major.
     void
-    cell_indices(const unsigned int *nodes, std::vector<Index> &indices) const;
+    node_indices(const unsigned int *nodes,
+                 const unsigned int  n,
+                 std::vector<Index> &indices) const;
 
     /// Start an assembly: matrix (if @p with_matrix) and right-hand side
     /// zero.

@@ -37,10 +37,11 @@ namespace mpm
       /// F = f F_n; V_n its volume at the start of the step, V0 initial.
       struct Point
       {
-        unsigned int                  body;
-        dealii::Tensor<2, dim>        h, f, f_inv, F;
-        double                        j, V_n, V0;
-        const dealii::Tensor<1, dim> *G; ///< grad N_a(x_p^n), the cell's nv
+        unsigned int           body;
+        dealii::Tensor<2, dim> h, f, f_inv, F;
+        double                 j, V_n, V0;
+        /// grad N_a(x_p^n) for each node a of the cell's list (reset())
+        const dealii::Tensor<1, dim> *G;
         /// F-bar's (J_bar/J)^(1/d), set by material_increment()
         double alpha = 1;
       };
@@ -64,9 +65,10 @@ namespace mpm
         return any_body;
       }
 
-      /// Start a cell.
+      /// Start a cell whose particles reach @p n_nodes nodes (the cell's
+      /// vertices in standard MPM; more with a domain family).
       void
-      reset();
+      reset(const unsigned int n_nodes = nv);
 
       /// Add one particle of a smoothing body to its body's cell sums.
       void
@@ -87,8 +89,8 @@ namespace mpm
                          dealii::Tensor<2, dim> &h_eff) const;
 
       /// d h_eff / d u_bk: the derivative of the material's increment of
-      /// particle @p p by component @p k of the increment of the cell's
-      /// node @p b.
+      /// particle @p p by component @p k of the increment of node @p b of
+      /// the cell's list.
       dealii::Tensor<2, dim>
       derivative(const Point       &p,
                  const bool         total,
@@ -100,11 +102,12 @@ namespace mpm
       {
         double V0 = 0, V = 0, V_n = 0, V_n_tr_h = 0;
         /// sum V_n G_b (rate) and sum V f^-T G_b (total) per node b
-        dealii::Tensor<1, dim> V_n_G[nv], V_g[nv];
+        std::vector<dealii::Tensor<1, dim>> V_n_G, V_g;
       };
       std::vector<char> cell_average; ///< per body
       bool              any_body = false;
       std::vector<Sums> sums; ///< per body, of the current cell
+      unsigned int      n_nodes = nv;
     };
   } // namespace remedies
 } // namespace mpm

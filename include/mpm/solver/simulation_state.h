@@ -52,6 +52,12 @@ namespace mpm
     void
     relocate_moved_particles();
 
+    /// The stress update of the particles from the grid velocity in
+    /// kinematics over @p dt (timed; errors recorded). Returns the stable
+    /// time step of the new state.
+    double
+    update_particle_stress(const double dt);
+
     const Parameters::AllParameters<dim> &params;
     const MPI_Comm                        comm;
     dealii::ConditionalOStream           &pcout;
