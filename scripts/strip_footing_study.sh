@@ -10,6 +10,10 @@
 # Prandtl's limit: q/c_u = 2 + pi = 5.142. Figure:
 # scripts/plot_strip_footing.py OUT doc/figures/strip_footing.png (the
 # validation suite's part strip_footing runs both).
+# FAMILIES (default "standard") lists the shape-function families to run
+# each variant with; a family other than standard is named in the
+# variant, e.g. theta-bar-cpGIMP; their domains are cut at the grid's
+# walls (Domain outside the grid = clamp).
 # Usage: scripts/strip_footing_study.sh [OUT] [h values...]   (MPM=...)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,14 +25,21 @@ echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | settlement reache
 echo "|---|---|---|---|---|---|---|---|---|"
 for h in ${@:-0.25 0.125 0.0625}; do
   read -r nx ny ns nf <<< "$(python3 -c "print(round(5/$h), round(6.25/$h), round(5/$h), round(0.5/$h))")"
-  for variant in standard theta-bar; do
+  for family in ${FAMILIES:-standard}; do
+  for remedy in standard theta-bar; do
     smoothing=none
-    [ $variant = theta-bar ] && smoothing=cell
+    [ $remedy = theta-bar ] && smoothing=cell
+    variant=$remedy
+    [ $family = standard ] || variant=$remedy-$family
     dir="$out/${variant}_$h"
     cat > "$out/case.prm" <<PRM
 include $root/prm/strip_footing.prm
 subsection Grid
   set Subdivisions = $nx, $ny
+end
+subsection Shape functions
+  set Family = $family
+  set Domain outside the grid = clamp
 end
 subsection Output
   set Directory = $dir
@@ -71,5 +82,6 @@ newton = sum(int(float(r["newton_iterations"])) for r in rows)
 print(f"| {variant} | {h} | {at(0.05)} | {at(0.1)} | {at(0.2)} | "
       f"{pts[-1][1]:.3f} | {pts[-1][0]:.2f} | {newton} | {wall} |")
 PY
+  done
   done
 done

@@ -27,10 +27,12 @@
 #                   (a) 21 runs at h = 4, 2, 1; (b) 14 runs at h = 4
 #                   and 2 and 3 at h = 1                           20 min
 #   water_column    scripts/water_column_study.sh + plot (section 6) 1.8 min
-#   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static
-#                   (doc/implicit.md)                               2.5 min
+#   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static,
+#                   standard MPM and CPDI (doc/implicit.md)         9 min
 #   thick_cylinder_implicit  scripts/thick_cylinder_implicit.sh + plot,
 #                   quasi-static (doc/implicit.md)                  35 s
+#   column_implicit scripts/column_implicit_study.sh + plot,
+#                   quasi-static, every family (doc/implicit.md)    1 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
 # Full suite: 71 minutes. QUICK=1 (coarse grids, short runs, few
@@ -45,7 +47,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit column_implicit recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 py=/usr/bin/python3
@@ -151,8 +153,15 @@ part_thick_cylinder_implicit() {
 part_strip_footing() {
   local h=""
   [ "$quick" = 1 ] && h=0.25
-  "$root/scripts/strip_footing_study.sh" "$res/strip-footing" $h &&
+  FAMILIES="standard CPDI" "$root/scripts/strip_footing_study.sh" "$res/strip-footing" $h &&
     $py "$root/scripts/plot_strip_footing.py" "$res/strip-footing" "$figs/strip_footing.png"
+}
+
+part_column_implicit() {
+  local n=""
+  [ "$quick" = 1 ] && n="10 20"
+  "$root/scripts/column_implicit_study.sh" "$res/column-implicit" $n &&
+    $py "$root/scripts/plot_column_implicit.py" "$res/column-implicit" "$figs/column_implicit.png"
 }
 
 part_convecting_bar() {
