@@ -187,6 +187,12 @@ namespace mpm
       {
         const double h = std::min(sub, t_end - t);
         find_unknowns(t, h);
+        // The stencils are those of the start of the step: a domain that
+        // cannot be evaluated (outside the grid, collapsed) stays so in
+        // every cut, so the run stops with its message at once.
+        if (Utilities::MPI::max(state.local_error.empty() ? 0 : 1,
+                                state.comm) == 1)
+          return;
         last = solve_equilibrium(t + h, h);
         total_its += last.iterations;
         total_linear += last.linear_iterations;
