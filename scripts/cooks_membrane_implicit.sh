@@ -3,11 +3,14 @@
 # the quasi-static integrator in one load step, on grids h = 4, 2, 1, 0.5,
 # 0.25: the tip displacement ratios to the FE reference, Newton and linear
 # (AMG-preconditioned GMRES) iterations, and the wall time of the run.
-# Usage: scripts/cooks_membrane_implicit.sh [h values...] [RANKS=n]
+# FAMILY=uGIMP|cpGIMP|CPDI|CPDI2 runs that shape-function family instead
+# of standard MPM.
+# Usage: scripts/cooks_membrane_implicit.sh [h values...] [RANKS=n] [FAMILY=...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=${MPM:-$root/build/mpm}
 ranks=${RANKS:-1}
+family=${FAMILY:-standard}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -27,6 +30,9 @@ subsection Time stepping
   set Time step = 250
   set End time = 250
   set Damping coefficient = 0
+end
+subsection Shape functions
+  set Family = $family
 end
 subsection Output
   set Directory = $work/out
