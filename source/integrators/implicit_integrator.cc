@@ -11,6 +11,7 @@
 #include <mpm/transfer/particle_to_grid.h>
 #include <mpm/utilities/input_error.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -206,6 +207,18 @@ namespace mpm
                   << last.error << "; relative residuals:";
                 for (const double r : last.residuals)
                   s << ' ' << std::setprecision(3) << r;
+                // Newton's increments not reducing the residual at all:
+                // the tangent is singular in the loaded direction.
+                if (last.residuals.size() > 2 &&
+                    *std::min_element(last.residuals.begin() + 1,
+                                      last.residuals.end()) >
+                      0.99 * last.residuals.front())
+                  s << ". The residual never decreased: the tangent is "
+                       "singular, most likely because a body is not held "
+                       "(a quasi-static step needs walls (Boundary "
+                       "conditions) or rigid bodies of prescribed motion "
+                       "that hold every body in every direction, since "
+                       "there is no inertia)";
                 state.local_error.record(s.str());
                 return;
               }
