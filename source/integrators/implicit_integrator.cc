@@ -50,12 +50,10 @@ namespace mpm
         // without symmetry
         symmetric = symmetric && material.has_symmetric_tangent() &&
                     !smoothing->smooths(b);
-      }
-    for (unsigned int b = 0; b < state.bodies.size(); ++b)
-      {
-        if (state.bodies[b].is_rigid())
+        rigid_index.push_back(body.is_rigid() ? int(rigid_bodies.size()) : -1);
+        if (body.is_rigid())
           rigid_bodies.push_back(b);
-        has_body_force.push_back(state.bodies[b].has_body_force());
+        has_body_force.push_back(body.has_body_force());
       }
     linear_solver = p.implicit.linear_solver;
     if (linear_solver == LinearSolver::automatic)
@@ -261,11 +259,9 @@ namespace mpm
       state.domain_functions->forget_stencils();
     // Nodes without mass (no particle reaches them) are not unknowns.
     compute_nodal_fields();
-    if (state.domain_functions)
-      couple_stencil_nodes();
-    using P          = transfer::P2GLayout<dim>;
-    const auto &grid = state.background;
-    compute_nodal_support();
+    scan_stencils();
+    using P               = transfer::P2GLayout<dim>;
+    const auto  &grid     = state.background;
     const double fraction = state.params.implicit.min_nodal_support;
     active.assign(grid.n_local_nodes(), 0);
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
@@ -300,26 +296,60 @@ namespace mpm
 
   template <int dim>
   void
-  ImplicitIntegrator<dim>::compute_nodal_support()
+  ImplicitIntegrator<dim>::scan_stencils()
   {
-    using L       = ParticleLayout<dim>;
-    support       = 0.;
+    // One pass over the stencils of the start of the step: the particles'
+    // volume at the nodes (support), the rigid bodies' mass there, and for
+    // a domain family the nodes each cell's particles reach, all of which
+    // couple (the sparsity; the cell average of the smoothing couples them
+    // all).
+    using L                 = ParticleLayout<dim>;
+    const unsigned int n_r  = rigid_bodies.size();
+    const bool         wide = state.domain_functions != nullptr;
+    support                 = 0.;
+    if (n_r > 0)
+      rigid_mass = 0.;
+    stencil_groups.clear();
     double     *V = support.begin();
+    double     *m = n_r > 0 ? rigid_mass.begin() : nullptr;
     std::string error;
     with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
+      stencils.begin_cell();
       for (const auto &particle : pic)
         {
-          if (!weights.evaluate(particle, false, error))
+          if (!weights.evaluate(particle, wide, error))
             return false;
-          const double volume = particle.get_properties()[L::volume];
+          const double *prop = particle.get_properties().data();
+          const int r = rigid_index[static_cast<unsigned int>(prop[L::body])];
           for (unsigned int a = 0; a < weights.size(); ++a)
-            V[weights.node(a)] += volume * weights.value(a);
+            {
+              V[weights.node(a)] += prop[L::volume] * weights.value(a);
+              if (r >= 0)
+                m[weights.node(a) * n_r + r] +=
+                  prop[L::mass] * weights.value(a);
+            }
+          if (wide)
+            stencils.add(weights, nullptr);
+        }
+      if (wide)
+        {
+          stencil_groups.nodes.insert(stencil_groups.nodes.end(),
+                                      stencils.nodes(),
+                                      stencils.nodes() + stencils.n_nodes());
+          stencil_groups.close_group();
         }
       return true;
     });
     state.local_error.record(error);
     support.compress(VectorOperation::add);
     support.update_ghost_values();
+    if (n_r > 0)
+      {
+        rigid_mass.compress(VectorOperation::add);
+        rigid_mass.update_ghost_values();
+      }
+    if (wide)
+      system.couple(stencil_groups);
   }
 
   template <int dim>
@@ -332,30 +362,6 @@ namespace mpm
     prescribed_by.assign(grid.n_local_nodes(), 0);
     if (n_r == 0)
       return;
-    using L = ParticleLayout<dim>;
-    std::vector<int> rigid_index(state.bodies.size(), -1);
-    for (unsigned int r = 0; r < n_r; ++r)
-      rigid_index[rigid_bodies[r]] = r;
-    rigid_mass    = 0.;
-    double     *m = rigid_mass.begin();
-    std::string error;
-    with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
-      for (const auto &particle : pic)
-        {
-          if (!weights.evaluate(particle, false, error))
-            return false;
-          const double *prop = particle.get_properties().data();
-          const int r = rigid_index[static_cast<unsigned int>(prop[L::body])];
-          if (r < 0)
-            continue;
-          for (unsigned int a = 0; a < weights.size(); ++a)
-            m[weights.node(a) * n_r + r] += prop[L::mass] * weights.value(a);
-        }
-      return true;
-    });
-    state.local_error.record(error);
-    rigid_mass.compress(VectorOperation::add);
-    rigid_mass.update_ghost_values();
     // A node follows the rigid body of most mass there: in its Prescribed
     // directions if it also carries another body, in every direction if
     // not (no other stiffness holds it).
@@ -543,32 +549,6 @@ namespace mpm
         weights.end_pass(ok);
       });
     return ok;
-  }
-
-  template <int dim>
-  void
-  ImplicitIntegrator<dim>::couple_stencil_nodes()
-  {
-    // Every node a cell's particles reach couples with every other (the
-    // volumetric smoothing's cell average couples them all).
-    stencil_groups.clear();
-    std::string error;
-    with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
-      stencils.begin_cell();
-      for (const auto &particle : pic)
-        {
-          if (!weights.evaluate(particle, true, error))
-            return false;
-          stencils.add(weights, nullptr);
-        }
-      stencil_groups.nodes.insert(stencil_groups.nodes.end(),
-                                  stencils.nodes(),
-                                  stencils.nodes() + stencils.n_nodes());
-      stencil_groups.close_group();
-      return true;
-    });
-    state.local_error.record(error);
-    system.couple(stencil_groups);
   }
 
   template <int dim>

@@ -126,9 +126,11 @@ namespace mpm
                     const double     dt,
                     const bool       with_matrix,
                     std::string     &error);
-    /// The sparsity of the nodes the domain families' stencils couple.
+    /// One pass over the stencils of the start of the step: support,
+    /// rigid_mass, and for a domain family the sparsity of the nodes its
+    /// stencils couple.
     void
-    couple_stencil_nodes();
+    scan_stencils();
     void
     commit(const double t, const double dt);
 
@@ -138,10 +140,8 @@ namespace mpm
     rigid_displacement(const unsigned int r,
                        const double       t,
                        const double       dt) const;
-    /// support: the particles' volume at the nodes.
-    void
-    compute_nodal_support();
-    /// The nodes the rigid bodies reach: prescribed, prescribed_by.
+    /// The nodes the rigid bodies reach (rigid_mass of scan_stencils()):
+    /// prescribed, prescribed_by.
     void
     find_prescribed_nodes();
     /// The force the prescribed nodes exert on the other bodies,
@@ -168,7 +168,8 @@ namespace mpm
     unsigned int              last_cuts = 0;
     std::vector<double>       history_scratch;
     std::vector<unsigned int> rigid_bodies; ///< bodies of prescribed motion
-    NodalVector               rigid_mass;   ///< per rigid body, per node
+    std::vector<int>          rigid_index; ///< per body: its place there, or -1
+    NodalVector               rigid_mass;  ///< per rigid body, per node
     /// per node-local index: the directions (bits) it follows a rigid
     /// body in, and which one (index into rigid_bodies)
     std::vector<unsigned char> prescribed;
