@@ -3,14 +3,26 @@
 # the quasi-static integrator in one load step, on grids h = 4, 2, 1, 0.5,
 # 0.25: the tip displacement ratios to the FE reference, Newton and linear
 # (AMG-preconditioned GMRES) iterations, and the wall time of the run.
+# CASE=b takes the nearly incompressible panel in plane strain instead
+# (prm/cooks_membrane_plane_strain.prm, nu = 0.4999).
 # FAMILY=uGIMP|cpGIMP|CPDI|CPDI2 runs that shape-function family instead
-# of standard MPM.
-# Usage: scripts/cooks_membrane_implicit.sh [h values...] [RANKS=n] [FAMILY=...]
+# of standard MPM; FILTER=mass|compliance adds the assumed-stress filter
+# with that metric; SMOOTHING=cell adds theta-bar.
+# Usage: [CASE=b] [RANKS=n] [FAMILY=...] [FILTER=...] [SMOOTHING=cell]
+#        scripts/cooks_membrane_implicit.sh [h values...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=${MPM:-$root/build/mpm}
 ranks=${RANKS:-1}
 family=${FAMILY:-standard}
+smoothing=${SMOOTHING:-none}
+case_prm=cooks_membrane.prm load="F=1e-3, uy_ref=25.19, uy_ref_mid=23.967" moduli="E=1"
+if [ "${CASE:-a}" = b ]; then
+  case_prm=cooks_membrane_plane_strain.prm
+  load="F=1, uy_ref=0.07771, uy_ref_mid=0.07404" moduli="E=250"
+fi
+filter=none metric=mass
+[ -n "${FILTER:-}" ] && filter="assumed stress" metric=$FILTER
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -19,8 +31,8 @@ echo "|---|---|---|---|---|---|---|"
 for h in ${@:-4 2 1 0.5 0.25}; do
   read -r nx ny nb <<< "$(python3 -c "print(round(52/$h), round(68/$h), round(48/$h))")"
   cat > "$work/case.prm" <<PRM
-include $root/prm/cooks_membrane.prm
-set Constants = F=1e-3, uy_ref=25.19, uy_ref_mid=23.967, r_fit=$h, tr=250, E=1, rho=1
+include $root/prm/$case_prm
+set Constants = $load, r_fit=$h, tr=250, $moduli, rho=1
 subsection Grid
   set Subdivisions = $nx, $ny
 end
@@ -43,6 +55,11 @@ end
 subsection Bodies
   subsection Body 0
     set Subdivisions = $nb
+    subsection Locking remedies
+      set Stress filter = $filter
+      set Filter metric = $metric
+      set Volumetric smoothing = $smoothing
+    end
   end
 end
 PRM

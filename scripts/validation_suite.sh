@@ -33,6 +33,8 @@
 #                   quasi-static (doc/implicit.md)                  35 s
 #   column_implicit scripts/column_implicit_study.sh + plot,
 #                   quasi-static, every family (doc/implicit.md)    1 min
+#   cantilever_newmark scripts/cantilever_newmark_study.sh + plot,
+#                   Newmark with the filter (doc/implicit.md)       1 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
 # Full suite: 71 minutes. QUICK=1 (coarse grids, short runs, few
@@ -47,7 +49,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit column_implicit recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit column_implicit cantilever_newmark recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 py=/usr/bin/python3
@@ -148,6 +150,11 @@ part_thick_cylinder_implicit() {
   mkdir -p "$res/thick-cylinder-implicit" &&
     "$root/scripts/thick_cylinder_implicit.sh" $h > "$res/thick-cylinder-implicit/table.md" &&
     $py "$root/scripts/plot_thick_cylinder_implicit.py" "$res/thick-cylinder-implicit/table.md" "$figs/thick_cylinder_implicit.png"
+}
+
+part_cantilever_newmark() {
+  "$root/scripts/cantilever_newmark_study.sh" "$res/cantilever-newmark" &&
+    $py "$root/scripts/plot_cantilever_newmark.py" "$res/cantilever-newmark/table.txt" "$figs/cantilever_newmark.png"
 }
 
 part_strip_footing() {

@@ -6,7 +6,10 @@
 #include <mpm/integrators/implicit_integrator.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/assumed_stress_force.h>
+#include <mpm/remedies/stress_filter.h>
 #include <mpm/shape_functions/family_registry.h>
+#include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
 #include <mpm/transfer/particle_to_grid.h>
 #include <mpm/utilities/input_error.h>
@@ -23,11 +26,17 @@ namespace mpm
   template <int dim>
   ImplicitIntegrator<dim>::ImplicitIntegrator(SimulationState<dim> &s)
     : TimeIntegrator<dim>(s)
+    , dynamic(s.params.time.integrator ==
+              Parameters::TimeStepping::Integrator::newmark)
+    , beta(s.params.time.newmark_beta)
+    , gamma(s.params.time.newmark_gamma)
+    , damping(dynamic ? s.params.time.damping : 0.)
     , smoothing(std::make_unique<Smoothing>(s.bodies))
   {
     using LinearSolver    = Parameters::ImplicitSolver::LinearSolver;
     const auto &p         = state.params;
     bool        symmetric = true;
+    with_inertia          = dynamic;
     for (unsigned int b = 0; b < state.bodies.size(); ++b)
       {
         // (the remedies refuse the integrator themselves)
@@ -44,12 +53,13 @@ namespace mpm
                                      ArrayView<const double>(history),
                                      tangent))
           throw InputError(section + "/Material/Model = " + material.name() +
-                           " has no tangent for Time stepping/Integrator = "
-                           "quasi-static; use the explicit integrator");
+                           " has no tangent for Time stepping/Integrator = " +
+                           name() + "; use the explicit integrator");
         // F-bar and the rate form's B-bar couple a cell's particles
         // without symmetry
+        // and the filter's mass metric (G^T H^-1 G_C with G_C != G)
         symmetric = symmetric && material.has_symmetric_tangent() &&
-                    !smoothing->smooths(b);
+                    !smoothing->smooths(b) && !s.stress_filter->filtered(b);
         rigid_index.push_back(body.is_rigid() ? int(rigid_bodies.size()) : -1);
         if (body.is_rigid())
           rigid_bodies.push_back(b);
@@ -71,6 +81,18 @@ namespace mpm
   {
     // No stability limit: the step is the load step.
     state.stable_dt = std::numeric_limits<double>::max();
+    if (dynamic)
+      {
+        const double limit = Utilities::MPI::min(
+          stable_time_step(state.background,
+                           state.particle_handler,
+                           state.bodies),
+          state.comm);
+        state.pcout << "  Newmark step " << state.params.time.time_step
+                    << " = " << state.params.time.time_step / limit
+                    << " times the explicit stability limit " << limit
+                    << " of the initial state" << std::endl;
+      }
   }
 
   template <int dim>
@@ -173,6 +195,11 @@ namespace mpm
         state.background.initialize_vector(external_force, dim);
         if (!rigid_bodies.empty())
           state.background.initialize_vector(rigid_mass, rigid_bodies.size());
+        if (dynamic)
+          {
+            state.background.initialize_vector(velocity_n, dim);
+            state.background.initialize_vector(acceleration_n, dim);
+          }
       }
     // Sub-steps: halved when Newton fails, doubled again (up to dt) when
     // it converges in few iterations.
@@ -191,6 +218,8 @@ namespace mpm
         // every cut, so the run stops with its message at once.
         if (Utilities::MPI::max(state.local_error.empty() ? 0 : 1,
                                 state.comm) == 1)
+          return;
+        if (dynamic && !start_motion(t, h))
           return;
         last = solve_equilibrium(t + h, h);
         total_its += last.iterations;
@@ -644,6 +673,21 @@ namespace mpm
 
   namespace
   {
+    /// The material's stress change T : @p dh_eff (in-plane) for its
+    /// tangent @p T = d sigma / d h.
+    template <int dim>
+    Tensor<2, dim>
+    material_change(const Tensor<4, 3> &T, const Tensor<2, dim> &dh_eff)
+    {
+      Tensor<2, dim> ds;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int m = 0; m < dim; ++m)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              ds[i][m] += T[i][m][k][l] * dh_eff[k][l];
+      return ds;
+    }
+
     /**
      * The change of P = j sigma f^-T (in-plane) by a change @p dh of the
      * step's displacement gradient that changes the material's increment
@@ -660,26 +704,37 @@ namespace mpm
                        const Tensor<2, dim> &dh,
                        const Tensor<2, dim> &dh_eff)
     {
-      Tensor<2, dim> ds;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int m = 0; m < dim; ++m)
-          for (unsigned int k = 0; k < dim; ++k)
-            for (unsigned int l = 0; l < dim; ++l)
-              ds[i][m] += T[i][m][k][l] * dh_eff[k][l];
+      const Tensor<2, dim> ds      = material_change(T, dh_eff);
       const Tensor<2, dim> f_inv_T = transpose(f_inv);
       const Tensor<2, dim> d_f_inv = -f_inv * dh * f_inv;
       return (j * trace(f_inv * dh)) * s * f_inv_T + j * ds * f_inv_T +
              j * s * transpose(d_f_inv);
     }
+
+    /// The change of the Kirchhoff stress tau = j sigma of the step (the
+    /// in-plane part) by @p dh, with @p dh_eff and @p T as above.
+    template <int dim>
+    SymmetricTensor<2, dim>
+    kirchhoff_change(const Tensor<2, dim> &s,
+                     const double          j,
+                     const Tensor<2, dim> &f_inv,
+                     const Tensor<4, 3>   &T,
+                     const Tensor<2, dim> &dh,
+                     const Tensor<2, dim> &dh_eff)
+    {
+      return symmetrize(j * trace(f_inv * dh) * s +
+                        j * material_change(T, dh_eff));
+    }
   } // namespace
 
   template <int dim>
-  template <typename Particles>
+  template <typename CellIterator, typename Particles>
   bool
-  ImplicitIntegrator<dim>::add_cell_system(const Particles &pic,
-                                           const double     dt,
-                                           const bool       with_matrix,
-                                           std::string     &error)
+  ImplicitIntegrator<dim>::add_cell_system(const CellIterator &cell,
+                                           const Particles    &pic,
+                                           const double        dt,
+                                           const bool          with_matrix,
+                                           std::string        &error)
   {
     using L                     = ParticleLayout<dim>;
     const unsigned int  n_nodes = stencils.n_nodes();
@@ -694,6 +749,10 @@ namespace mpm
     kinematics.dt         = dt;
     tangent_kinematics.dt = dt;
     unsigned int p        = 0;
+    filtered_taus.assign(points.size(), SymmetricTensor<2, dim>());
+    if (with_matrix && state.stress_filter->any())
+      filtered_changes.assign(points.size() * n, SymmetricTensor<2, dim>());
+    bool any_filtered = false;
     for (const auto &particle : pic)
       {
         const double *prop     = particle.get_properties().data();
@@ -734,13 +793,23 @@ namespace mpm
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int k = 0; k < dim; ++k)
             s[i][k] = sigma[i][k];
+        // A filtered body's force comes from the cell's projection of
+        // its particles' tau = j sigma (add_filtered_force()).
+        const bool filtered = state.stress_filter->filtered(q.body);
+        any_filtered        = any_filtered || filtered;
+        if (filtered)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int k = i; k < dim; ++k)
+              filtered_taus[p][i][k] = q.j * s[i][k];
         // First Piola-Kirchhoff stress with respect to the start of the
         // step, P = j sigma f^-T: f_int,a = V_n P G_a.
         const Tensor<2, dim> P = q.j * s * transpose(q.f_inv);
         for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
           {
             const unsigned int   a  = stencils.node(e);
-            const Tensor<1, dim> fa = q.V_n * (P * stencils.gradient(e));
+            const Tensor<1, dim> fa = filtered ?
+                                        Tensor<1, dim>() :
+                                        q.V_n * (P * stencils.gradient(e));
             for (unsigned int i = 0; i < dim; ++i)
               {
                 const double ext = stencils.value(e) * load.body[i];
@@ -782,6 +851,17 @@ namespace mpm
               {
                 Tensor<2, dim> dh;
                 dh[k] = q.G[b];
+                if (filtered)
+                  {
+                    filtered_changes[p * n + b * dim + k] = kirchhoff_change(
+                      s,
+                      q.j,
+                      q.f_inv,
+                      T,
+                      dh,
+                      smoothed ? smoothing->derivative(q, total, b, k) : dh);
+                    continue;
+                  }
                 const Tensor<2, dim> dP =
                   first_piola_change(s,
                                      q.j,
@@ -804,12 +884,146 @@ namespace mpm
           }
         ++p;
       }
+    if (any_filtered && !add_filtered_force(cell, pic, with_matrix, error))
+      return false;
     system.node_indices(nodes, n_nodes, cell_dofs);
     if (with_matrix)
       system.add_cell(cell_matrix, cell_rhs, cell_dofs);
     else
       system.add_cell_rhs(cell_rhs, cell_dofs);
     return true;
+  }
+
+  template <int dim>
+  template <typename CellIterator, typename Particles>
+  bool
+  ImplicitIntegrator<dim>::add_filtered_force(const CellIterator &cell,
+                                              const Particles    &pic,
+                                              const bool          with_matrix,
+                                              std::string        &error)
+  {
+    if constexpr (dim == 1)
+      {
+        (void)cell, (void)pic, (void)with_matrix, (void)error;
+        return true;
+      }
+    else
+      {
+        // The explicit step's filtered force (IntegratedFieldForce) as a
+        // function of the trial increment: the particles' tau = j sigma
+        // projected onto the cell's assumed-stress field (weights and
+        // places of the start of the step), the field integrated over the
+        // particle domains of the start of the step. That is linear in tau,
+        // so the tangent's column is the same map of the columns' tau
+        // changes: K = G^T H^-1 G_C, with G the field's work on the nodal
+        // motions, H the projection's metric and G_C that of the
+        // material's stress changes.
+        using L                   = ParticleLayout<dim>;
+        constexpr unsigned int nv = shape_functions::n_q1<dim>;
+        const auto            &grid    = state.background;
+        const unsigned int    *nodes   = stencils.nodes();
+        const unsigned int     n       = stencils.n_nodes() * dim;
+        auto                  &filter  = *state.stress_filter;
+        const auto            &geo     = grid.geometry(cell);
+        const unsigned int    *corners = grid.nodes(cell);
+        // (the standard family: the cell's list is its vertices in order)
+        for (unsigned int v = 0; v < nv; ++v)
+          if (v >= stencils.n_nodes() || nodes[v] != corners[v])
+            {
+              error = "the assumed-stress filter of the implicit step "
+                      "needs the cell's vertices as its node list";
+              return false;
+            }
+        Point<dim> centre;
+        for (unsigned int d = 0; d < dim; ++d)
+          centre[d] = 0.5;
+        const Tensor<2, dim> J0 = geo.jacobian(centre);
+        filter.begin_cell(J0);
+        double f[nv * dim];
+        for (unsigned int b = 0; b < state.bodies.size(); ++b)
+          {
+            if (!filter.filtered(b))
+              continue;
+            // The body's particles in the cell, and whether they fill it
+            // (AssumedStressForce::fills).
+            unsigned int count = 0;
+            double       V     = 0;
+            unsigned int p     = 0;
+            for (const auto &particle : pic)
+              {
+                if (points[p++].body == b)
+                  {
+                    ++count;
+                    V += particle.get_properties()[L::volume];
+                  }
+              }
+            if (count == 0)
+              continue;
+            const auto &projection = filter.projection(b);
+            remedies::AssumedStressForce<dim> force;
+            force.clear();
+            const bool fills =
+              remedies::AssumedStressForce<dim>::fills(count,
+                                                       V,
+                                                       std::abs(
+                                                         determinant(J0)));
+            const Tensor<2, dim> J0_inverse = invert(J0);
+            p                               = 0;
+            for (const auto &particle : pic)
+              {
+                const double *prop = particle.get_properties().data();
+                if (points[p++].body != b)
+                  continue;
+                force.add_particle(particle.get_reference_location(),
+                                   fills ? Tensor<2, dim>(
+                                             J0_inverse *
+                                             load_matrix<dim>(prop + L::F) *
+                                             load_matrix<dim>(prop + L::domain)) :
+                                           Tensor<2, dim>(),
+                                   prop[L::volume]);
+              }
+            // f = -(the field's internal force) of stresses tau(p)
+            const auto field_force = [&](const auto &tau) {
+              typename remedies::AssumedStressProjection<dim>::Moments sums;
+              sums.clear();
+              unsigned int q = 0;
+              for (const auto &particle : pic)
+                {
+                  if (points[q].body == b)
+                    projection.add(sums,
+                                   particle.get_reference_location(),
+                                   filter.weight(
+                                     b, particle.get_properties().data()),
+                                   tau(q));
+                  ++q;
+                }
+              double beta[remedies::AssumedStressProjection<dim>::n_beta];
+              std::fill(f, f + nv * dim, 0.);
+              if (projection.solve(sums, beta) !=
+                  remedies::AssumedStressProjection<dim>::Result::unchanged)
+                force.add_internal_force(geo, projection, beta, f);
+            };
+            field_force([&](const unsigned int q) { return filtered_taus[q]; });
+            double *const f_int = internal_force.begin();
+            for (unsigned int v = 0; v < nv; ++v)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  cell_rhs(v * dim + d) += f[v * dim + d];
+                  f_int[nodes[v] * dim + d] -= f[v * dim + d];
+                }
+            if (!with_matrix)
+              continue;
+            for (unsigned int col = 0; col < n; ++col)
+              {
+                field_force([&](const unsigned int q) {
+                  return filtered_changes[q * n + col];
+                });
+                for (unsigned int r = 0; r < nv * dim; ++r)
+                  cell_matrix(r, col) -= f[r];
+              }
+          }
+        return true;
+      }
   }
 
   template <int dim>
@@ -825,10 +1039,12 @@ namespace mpm
     internal_force = 0.;
     external_force = 0.;
     const bool ok =
-      with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
+      with_cell_weights([&](const auto &cell, const auto &pic, auto &weights) {
         return gather_cell(weights, pic, t, error) &&
-               add_cell_system(pic, dt, with_matrix, error);
+               add_cell_system(cell, pic, dt, with_matrix, error);
       });
+    const double inertia =
+      with_inertia ? add_inertia(dt, with_matrix) : 0.;
     // Every rank takes part in the exchanges, whatever happened here.
     system.finish_assembly(with_matrix);
     internal_force.compress(VectorOperation::add);
@@ -838,8 +1054,97 @@ namespace mpm
       error = "a particle of another rank failed in the trial increment";
     residual.norm = system.rhs_norm();
     residual.reference =
-      std::max(internal_force.l2_norm(), external_force.l2_norm());
+      std::max({internal_force.l2_norm(),
+                external_force.l2_norm(),
+                std::sqrt(Utilities::MPI::sum(inertia, state.comm))});
     return all_ok;
+  }
+
+  template <int dim>
+  bool
+  ImplicitIntegrator<dim>::start_motion(const double t, const double dt)
+  {
+    using P          = transfer::P2GLayout<dim>;
+    const auto &grid = state.background;
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      {
+        const double m = state.p2g.local_element(i * P::n_components + P::mass);
+        for (unsigned int c = 0; c < dim; ++c)
+          velocity_n.local_element(i * dim + c) =
+            m > state.min_nodal_mass ?
+              state.p2g.local_element(i * P::n_components + P::momentum + c) /
+                m :
+              0.;
+      }
+    // a_n from the balance of the stresses, loads and damping at the
+    // start (the increment is zero): what the particles carry needs no
+    // acceleration of its own.
+    Residual    r;
+    std::string error;
+    with_inertia = false;
+    if (!assemble(t, dt, false, r, error))
+      {
+        state.local_error.record("Newmark: the start of the step at t = " +
+                                 std::to_string(t) + ": " + error);
+        return false;
+      }
+    with_inertia = true;
+    acceleration_n = 0.;
+    for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
+      {
+        const double m = state.p2g.local_element(i * P::n_components + P::mass);
+        if (m > state.min_nodal_mass)
+          for (unsigned int c = 0; c < dim; ++c)
+            acceleration_n.local_element(i * dim + c) =
+              (external_force.local_element(i * dim + c) -
+               internal_force.local_element(i * dim + c)) /
+                m -
+              damping * velocity_n.local_element(i * dim + c);
+      }
+    acceleration_n.update_ghost_values();
+    system.apply_homogeneous_constraints(grid, velocity_n);
+    system.apply_homogeneous_constraints(grid, acceleration_n);
+    return true;
+  }
+
+  template <int dim>
+  double
+  ImplicitIntegrator<dim>::add_inertia(const double dt, const bool with_matrix)
+  {
+    // The lumped mass's force m (a_n+1 + c v_n+1) and its derivative
+    // m (1 / (beta dt^2) + c gamma / (beta dt)) by the increment, on the
+    // owned nodes (each once).
+    using P                 = transfer::P2GLayout<dim>;
+    const double stiffness  = 1 / (beta * dt * dt) + damping * gamma / (beta * dt);
+    double       norm2      = 0;
+    unsigned int node[1];
+    FullMatrix<double> matrix(dim, dim);
+    Vector<double>     rhs(dim);
+    for (unsigned int i = 0; i < state.background.n_owned_nodes(); ++i)
+      {
+        if (!active[i])
+          continue;
+        const double m = state.p2g.local_element(i * P::n_components + P::mass);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const unsigned int k = i * dim + c;
+            const double       a = new_acceleration(k, dt);
+            const double v = velocity_n.local_element(k) +
+                             dt * ((1 - gamma) * acceleration_n.local_element(k) +
+                                   gamma * a);
+            const double f = m * (a + damping * v);
+            rhs(c)         = -f;
+            matrix(c, c)   = m * stiffness;
+            norm2 += f * f;
+          }
+        node[0] = i;
+        system.node_indices(node, 1, cell_dofs);
+        if (with_matrix)
+          system.add_cell(matrix, rhs, cell_dofs);
+        else
+          system.add_cell_rhs(rhs, cell_dofs);
+      }
+    return norm2;
   }
 
   template <int dim>
@@ -849,18 +1154,21 @@ namespace mpm
     // The converged increment as a grid velocity u / dt: the explicit
     // stress update then gives F = (I + h) F_n and the material's stress
     // of exactly the converged state, and G2P moves the particles by
-    // sum_a N_a u_a (their velocity unchanged: the increment of the
-    // kinematics vector is zero).
+    // sum_a N_a u_a. Their velocity changes by the kinematics vector's
+    // increment: Newmark's v_n+1 - v_n (FLIP), nothing when quasi-static.
     using K          = KinematicsLayout<dim>;
     const auto &grid = state.background;
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
       for (unsigned int c = 0; c < dim; ++c)
         {
+          const unsigned int k = i * dim + c;
           state.kinematics.local_element(i * K::n_components + K::velocity +
-                                         c) =
-            increment.local_element(i * dim + c) / dt;
+                                         c) = increment.local_element(k) / dt;
           state.kinematics.local_element(i * K::n_components + K::increment +
-                                         c) = 0.;
+                                         c) =
+            dynamic ? dt * ((1 - gamma) * acceleration_n.local_element(k) +
+                            gamma * new_acceleration(k, dt)) :
+                      0.;
         }
     // A rigid body moves as prescribed, not with the grid.
     using L = ParticleLayout<dim>;
@@ -883,6 +1191,14 @@ namespace mpm
           nullptr}));
     }
     state.update_particle_stress(dt);
+    // A filtered body keeps the field that made the converged force, as
+    // the explicit step's projection writes it back (the cells and places
+    // are still those of the start of the step).
+    if (state.stress_filter->any())
+      {
+        TimerOutput::Scope timer(state.timer, "stress filter");
+        state.stress_filter->apply(grid, state.particle_handler);
+      }
     if (!rigid_bodies.empty())
       {
         std::vector<Tensor<1, dim>> u(state.bodies.size());

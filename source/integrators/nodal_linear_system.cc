@@ -179,6 +179,30 @@ namespace mpm
 
   template <int dim>
   void
+  NodalLinearSystem<dim>::apply_homogeneous_constraints(
+    const BackgroundGrid<dim> &grid,
+    NodalVector               &v) const
+  {
+    // A node's lines refer to its own directions only (walls and nodes
+    // without mass; build_constraints()).
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      {
+        const Index first = node_to_global[i];
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            if (!node_constraints.is_constrained(first + c))
+              continue;
+            double value = 0;
+            for (const auto &[l, w] :
+                 *node_constraints.get_constraint_entries(first + c))
+              value += w * v.local_element(i * dim + (l - first));
+            v.local_element(i * dim + c) = value;
+          }
+      }
+  }
+
+  template <int dim>
+  void
   NodalLinearSystem<dim>::begin_assembly(const bool with_matrix)
   {
     if (with_matrix)

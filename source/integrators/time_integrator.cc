@@ -9,7 +9,7 @@ namespace mpm
   create_time_integrator(SimulationState<dim> &state)
   {
     using Integrator = Parameters::TimeStepping::Integrator;
-    if (state.params.time.integrator == Integrator::quasi_static)
+    if (state.params.time.integrator != Integrator::explicit_dynamics)
       return std::make_unique<ImplicitIntegrator<dim>>(state);
     return std::make_unique<ExplicitIntegrator<dim>>(state);
   }

@@ -35,13 +35,32 @@ namespace mpm
       prm.declare_entry(
         "Integrator",
         "explicit",
-        Patterns::Selection("explicit|quasi-static"),
+        Patterns::Selection("explicit|quasi-static|Newmark"),
         "explicit: explicit dynamics (the scheme, step control, FLIP "
         "and damping entries below). quasi-static: every step solves "
         "the static equilibrium at the end of the step by Newton's method "
         "(subsection Implicit solver); time is a pseudo-time that ramps "
         "the loads, the step is Time step (Time step control = fixed), "
-        "and the particles keep their velocity.");
+        "and the particles keep their velocity. Newmark: implicit "
+        "dynamics, every step solves the equation of motion with the "
+        "lumped nodal mass at the end of the step by Newton's method "
+        "(Newmark beta and gamma; the step is Time step, without a "
+        "stability limit).");
+      prm.declare_entry("Newmark beta",
+                        "0.25",
+                        Patterns::Double(0, 0.5),
+                        "beta of Integrator = Newmark: u_n+1 = u_n + dt v_n "
+                        "+ dt^2 ((1/2 - beta) a_n + beta a_n+1). With gamma "
+                        "= 1/2 and beta = 1/4 (the trapezoidal rule) "
+                        "second-order accurate and without numerical "
+                        "damping; unconditionally stable for beta >= "
+                        "gamma / 2.");
+      prm.declare_entry("Newmark gamma",
+                        "0.5",
+                        Patterns::Double(0.5, 1),
+                        "gamma of Integrator = Newmark: v_n+1 = v_n + dt ((1 "
+                        "- gamma) a_n + gamma a_n+1); above 1/2 it damps "
+                        "high frequencies (first-order accurate).");
       prm.declare_entry("Scheme",
                         "MUSL",
                         Patterns::Selection("USF|USL|MUSL"),
@@ -98,9 +117,12 @@ namespace mpm
     {
       prm.enter_subsection("Time stepping");
       end_time            = prm.get_double("End time");
-      integrator          = prm.get("Integrator") == "quasi-static" ?
-                              Integrator::quasi_static :
-                              Integrator::explicit_dynamics;
+      const std::string integrator_name = prm.get("Integrator");
+      integrator = integrator_name == "quasi-static" ? Integrator::quasi_static :
+                   integrator_name == "Newmark"      ? Integrator::newmark :
+                                                       Integrator::explicit_dynamics;
+      newmark_beta  = prm.get_double("Newmark beta");
+      newmark_gamma = prm.get_double("Newmark gamma");
       const std::string s = prm.get("Scheme");
       scheme              = s == "USF" ? Scheme::usf :
                             s == "USL" ? Scheme::usl :
@@ -126,6 +148,26 @@ namespace mpm
             throw InputError(
               "Time stepping/Integrator = quasi-static has no dynamics: "
               "remove Damping coefficient and Velocity transfer = APIC");
+        }
+      if (integrator == Integrator::newmark)
+        {
+          if (step_control != StepControl::fixed)
+            throw InputError(
+              "Time stepping/Integrator = Newmark has no stability limit to "
+              "take a CFL fraction of: set Time step control = fixed and "
+              "the step as Time step");
+          if (apic || flip_fraction != 1.)
+            throw InputError(
+              "Time stepping/Integrator = Newmark updates the particle "
+              "velocity by the Newmark velocity change at the nodes (FLIP): "
+              "remove Velocity transfer = APIC and FLIP fraction");
+          if (newmark_beta < newmark_gamma / 2)
+            throw InputError(
+              "Time stepping/Newmark beta = " + std::to_string(newmark_beta) +
+              " is below Newmark gamma / 2 = " +
+              std::to_string(newmark_gamma / 2) +
+              ": the scheme would be only conditionally stable; use beta "
+              ">= gamma / 2 (beta = 1/4, gamma = 1/2: the trapezoidal rule)");
         }
       if (step_control == StepControl::fixed && !(time_step > 0))
         throw InputError("Time stepping/Time step must be positive");

@@ -65,9 +65,23 @@ namespace mpm
         void
         check(const Context &context) const override
         {
-          require_explicit_integrator(context,
-                                      "Stress filter = assumed stress");
           const std::string here     = context.where + "/Locking remedies: ";
+          if (context.time.integrator !=
+                Parameters::TimeStepping::Integrator::explicit_dynamics &&
+              context.family != shape_functions::Family::standard)
+            throw InputError(
+              here + "Stress filter = assumed stress of the implicit "
+                     "integrator is linearized for Shape functions/Family = "
+                     "standard only (a domain family's filtered force is "
+                     "not built there); use the standard family or "
+                     "Integrator = explicit");
+          if (context.time.integrator !=
+                Parameters::TimeStepping::Integrator::explicit_dynamics &&
+              !write_back)
+            throw InputError(
+              here + "Filtered stress = force only has no linearization for "
+                     "the implicit Time stepping/Integrator (quasi-static, "
+                     "Newmark); use Filtered stress = written back");
           const auto       &material = context.material;
           if (context.dimension == 1)
             throw InputError(context.where +

@@ -104,9 +104,9 @@ namespace mpm
       if (context.time.integrator !=
           Parameters::TimeStepping::Integrator::explicit_dynamics)
         throw InputError(context.where + "/Locking remedies: " + remedy +
-                         " has no linearization for Time stepping/"
-                         "Integrator = quasi-static yet; remove it or use "
-                         "Integrator = explicit");
+                         " has no linearization for the implicit "
+                         "Time stepping/Integrator (quasi-static, Newmark) "
+                         "yet; remove it or use Integrator = explicit");
     }
   } // namespace remedies
 } // namespace mpm

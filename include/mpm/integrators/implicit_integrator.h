@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
@@ -16,14 +17,17 @@
 namespace mpm
 {
   /**
-   * The quasi-static implicit step (doc/implicit.md): each step solves the
-   * equilibrium f_int(u) = f_ext(t_n+1) for the nodal displacement
-   * increment u by Newton's method, with updated-Lagrangian kinematics at
-   * the particles. Phases of one step:
+   * The implicit step (doc/implicit.md): each step solves the
+   * equilibrium f_int(u) = f_ext(t_n+1) (quasi-static) or the equation of
+   * motion M a_n+1(u) + f_int(u) = f_ext(t_n+1) (Newmark, lumped nodal
+   * mass) for the nodal displacement increment u by Newton's method, with
+   * updated-Lagrangian kinematics at the particles. Phases of one step:
    *   nodal mass (which nodes are unknowns) -> constraints ->
+   *   [Newmark: the nodes' v_n and a_n] ->
    *   Newton: assemble residual and tangent -> AMG-preconditioned Krylov
    *           solve -> line search -> converged?
-   *   -> stress update with the converged increment -> particle motion.
+   *   -> stress update with the converged increment -> particle motion
+   *      (and, Newmark, the particles' velocity change).
    * A step whose Newton iteration fails is cut in half (at most Maximum
    * step cuts times); the halves grow back once Newton converges in few
    * iterations. The particles' F, stress and history change only with a
@@ -44,7 +48,7 @@ namespace mpm
     std::string
     name() const override
     {
-      return "quasi-static";
+      return dynamic ? "Newmark" : "quasi-static";
     }
 
     void
@@ -120,12 +124,22 @@ namespace mpm
                 std::string     &error);
     /// A cell's residual (and tangent) from gather_cell()'s state, added
     /// to the system and the force vectors.
-    template <typename Particles>
+    template <typename CellIterator, typename Particles>
     bool
-    add_cell_system(const Particles &particles,
-                    const double     dt,
-                    const bool       with_matrix,
-                    std::string     &error);
+    add_cell_system(const CellIterator &cell,
+                    const Particles    &particles,
+                    const double        dt,
+                    const bool          with_matrix,
+                    std::string        &error);
+    /// The force (and tangent) of the cell's filtered bodies from their
+    /// particles' filtered_taus (and filtered_changes), added to the
+    /// cell's system (add_cell_system()).
+    template <typename CellIterator, typename Particles>
+    bool
+    add_filtered_force(const CellIterator &cell,
+                       const Particles    &particles,
+                       const bool          with_matrix,
+                       std::string        &error);
     /// One pass over the stencils of the start of the step: support,
     /// rigid_mass, and for a domain family the sparsity of the nodes its
     /// stencils couple.
@@ -133,6 +147,27 @@ namespace mpm
     scan_stencils();
     void
     commit(const double t, const double dt);
+
+    /// Newmark: the nodes' velocity v_n (the particles' momentum) and
+    /// acceleration a_n = M^-1 (f_ext(t) - f_int) of the start of the
+    /// step, both as the walls admit; false (and the run's error) if the
+    /// stresses cannot be evaluated.
+    bool
+    start_motion(const double t, const double dt);
+    /// Newmark: the inertia M (a_n+1 + c v_n+1) of the owned unknowns at
+    /// the current increment (and its tangent), added to the system;
+    /// returns the squared norm of that force on this rank.
+    double
+    add_inertia(const double dt, const bool with_matrix);
+    /// Newmark's a_n+1 of nodal entry k (node-local index * dim + c) for
+    /// the increment's value there.
+    double
+    new_acceleration(const unsigned int k, const double dt) const
+    {
+      const double u = increment.local_element(k);
+      return (u - dt * velocity_n.local_element(k)) / (beta * dt * dt) -
+             (0.5 / beta - 1) * acceleration_n.local_element(k);
+    }
 
     /// The displacement of rigid body @p r (index into rigid_bodies) from
     /// t to t + dt (midpoint rule).
@@ -154,6 +189,12 @@ namespace mpm
     add_to_increment(const dealii::TrilinosWrappers::MPI::Vector &delta,
                      const double                                 alpha);
 
+    const bool   dynamic; ///< Newmark, not quasi-static
+    const double beta, gamma, damping;
+    /// Newmark: the nodes' v_n and a_n (dim components per node)
+    NodalVector velocity_n, acceleration_n;
+    /// Newmark: assemble() adds the inertia (not for a_n itself)
+    bool                                     with_inertia = false;
     Parameters::ImplicitSolver::LinearSolver linear_solver;
     NodalLinearSystem<dim>                   system;
     /// The partition the system was built for.
@@ -191,6 +232,10 @@ namespace mpm
     std::vector<char>                            has_body_force; ///< per body
     CellStencils<dim>                            stencils; ///< of one cell
     typename NodalLinearSystem<dim>::NodeGroups  stencil_groups; ///< per cell
+    /// per particle of the cell: tau = j sigma of a filtered body, and
+    /// its change for each column of the cell's matrix
+    std::vector<dealii::SymmetricTensor<2, dim>> filtered_taus;
+    std::vector<dealii::SymmetricTensor<2, dim>> filtered_changes;
     dealii::FullMatrix<double>                   cell_matrix;
     dealii::Vector<double>                       cell_rhs;
     std::vector<dealii::types::global_dof_index> cell_dofs;

@@ -77,6 +77,13 @@ namespace mpm
                       std::vector<unsigned char>                &prescribed,
                       const std::vector<dealii::Tensor<1, dim>> &values);
 
+    /// Make the directions that the homogeneous constraints hold in @p v
+    /// (dim components per node-local node, owned and ghost) follow them:
+    /// a nodal velocity or acceleration that the walls admit.
+    void
+    apply_homogeneous_constraints(const BackgroundGrid<dim> &grid,
+                                  NodalVector               &v) const;
+
     /// Whether some node of some rank follows a rigid body.
     bool
     has_prescribed_motion() const

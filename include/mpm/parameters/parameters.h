@@ -38,12 +38,14 @@ namespace mpm
         fixed,
         cfl
       };
-      /// explicit dynamics, or Newton's method on the quasi-static
-      /// equilibrium of every step (load steps in pseudo-time)
+      /// explicit dynamics, Newton's method on the quasi-static
+      /// equilibrium of every step (load steps in pseudo-time), or on
+      /// Newmark's implicit equation of motion
       enum class Integrator
       {
         explicit_dynamics,
-        quasi_static
+        quasi_static,
+        newmark
       };
       Integrator   integrator    = Integrator::explicit_dynamics;
       Scheme       scheme        = Scheme::musl;
@@ -55,6 +57,8 @@ namespace mpm
       bool         apic          = false; ///< affine velocity transfer
       double       damping       = 0.0;
       unsigned int max_steps     = 0;
+      double       newmark_beta  = 0.25;
+      double       newmark_gamma = 0.5;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -106,13 +106,18 @@ namespace mpm
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = i; j < dim; ++j)
                 s[i][j] = full[i][j];
-            projections[b]->add(sums[b],
-                                xi,
-                                metric[b] == Metric::mass ? prop[L::mass] :
-                                                            prop[L::volume],
-                                s);
+            projections[b]->add(sums[b], xi, weight(b, prop), s);
           }
       }
+      /// The weight of the particle of body @p b with properties @p prop
+      /// in the projection: m_p (mass metric) or V_p (compliance).
+      double
+      weight(const unsigned int b, const double *prop) const
+      {
+        using L = ParticleLayout<dim>;
+        return metric[b] == Metric::mass ? prop[L::mass] : prop[L::volume];
+      }
+
       template <typename ParticleRange>
       Result
       finish_cell(const ParticleRange &particles_in_cell,
