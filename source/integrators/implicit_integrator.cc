@@ -55,9 +55,13 @@ namespace mpm
           throw InputError(section + "/Material/Model = " + material.name() +
                            " has no tangent for Time stepping/Integrator = " +
                            name() + "; use the explicit integrator");
-        // F-bar and the rate form's B-bar couple a cell's particles
-        // without symmetry
-        // and the filter's mass metric (G^T H^-1 G_C with G_C != G)
+        if (!dynamic && !material.has_static_shear_stiffness())
+          throw InputError(section + "/Material/Model = " + material.name() +
+                           " has no shear stiffness at rest, so a "
+                           "quasi-static step has no equilibrium to find; "
+                           "use Time stepping/Integrator = Newmark");
+        // F-bar, the rate form's B-bar and the filter (G^T H^-1 G_C with
+        // G_C != G) couple a cell's particles without symmetry
         symmetric = symmetric && material.has_symmetric_tangent() &&
                     !smoothing->smooths(b) && !s.stress_filter->filtered(b);
         rigid_index.push_back(body.is_rigid() ? int(rigid_bodies.size()) : -1);
@@ -291,7 +295,10 @@ namespace mpm
     scan_stencils();
     using P               = transfer::P2GLayout<dim>;
     const auto  &grid     = state.background;
-    const double fraction = state.params.implicit.min_nodal_support;
+    // Newmark's inertia holds the nodes that slivers reach (their mass
+    // and stiffness vanish together); the threshold is quasi-static only.
+    const double fraction =
+      dynamic ? 0. : state.params.implicit.min_nodal_support;
     active.assign(grid.n_local_nodes(), 0);
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
       active[i] =

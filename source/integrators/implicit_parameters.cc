@@ -78,7 +78,8 @@ namespace mpm
         "domain has a stiffness of the order of that sliver; left free, it "
         "takes displacements of thousands of cell sizes in the Newton "
         "direction and Newton fails. Such a node is held instead (its "
-        "weights at the particles are of the same order).");
+        "weights at the particles are of the same order). Quasi-static "
+        "steps only: with Integrator = Newmark the node's mass holds it.");
       prm.leave_subsection();
     }
 

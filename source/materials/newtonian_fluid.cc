@@ -105,6 +105,39 @@ namespace mpm
 
 
     double
+    NewtonianFluid::pressure_derivative(const double J) const
+    {
+      // linear: -K / J^2; Tait: -K J^(-gamma - 1)
+      return -K * std::pow(J, -exponent() - 1);
+    }
+
+    bool
+    NewtonianFluid::stress_tangent(const PointKinematics &point,
+                                   const SymmetricTensor<2, 3> &,
+                                   const ArrayView<const double> &,
+                                   Tensor<4, 3> &tangent) const
+    {
+      const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
+      const Tensor<2, 3> f_inverse =
+        dealii::invert(I + point.dt * point.velocity_gradient);
+      const double J          = jacobian(point.F);
+      const double dp_dJ      = pressure_derivative(J);
+      const double eta        = mu / point.dt;
+      tangent                 = Tensor<4, 3>();
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int l = 0; l < 3; ++l)
+              tangent[i][j][k][l] =
+                (i == j ? -dp_dJ * J * f_inverse[l][k] -
+                            (k == l ? 2 * eta / 3 : 0.) :
+                          0.) +
+                eta * ((i == k && j == l ? 1. : 0.) +
+                       (i == l && j == k ? 1. : 0.));
+      return true;
+    }
+
+    double
     NewtonianFluid::initial_jacobian(const SymmetricTensor<2, 3> &stress) const
     {
       const double p0 = -dealii::trace(stress) / 3;

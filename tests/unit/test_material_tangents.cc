@@ -172,19 +172,26 @@ BOOST_AUTO_TEST_CASE(von_mises_elastic_and_plastic_steps)
                                  0.01) < 1e-6);
 }
 
-BOOST_AUTO_TEST_CASE(no_tangent_means_refused)
+BOOST_AUTO_TEST_CASE(newtonian_fluid_both_equations_of_state)
 {
-  // The fluid has no tangent yet: the implicit integrator refuses it.
-  dealii::ParameterHandler prm;
-  NewtonianFluid::declare_parameters(prm);
-  NewtonianFluid fluid;
-  fluid.set_common(1000, KinematicAssumption::plane_strain);
-  fluid.parse_parameters(prm);
-  Tensor<4, 3> tangent;
-  BOOST_TEST(!fluid.stress_tangent(PointKinematics(),
-                                   SymmetricTensor<2, 3>(),
-                                   ArrayView<const double>(),
-                                   tangent));
+  // Bulk modulus 1e6 and viscosities from none to a viscous stress of the
+  // pressure's order (mu / dt = 1e5 at dt = 0.1).
+  for (const auto k : {KinematicAssumption::three_dimensional,
+                       KinematicAssumption::plane_strain,
+                       KinematicAssumption::uniaxial_strain})
+    for (const char *eos : {"linear", "Tait"})
+      for (const char *mu : {"0", "1e2", "1e4"})
+        {
+          dealii::ParameterHandler prm;
+          NewtonianFluid::declare_parameters(prm);
+          prm.set("Equation of state", eos);
+          prm.set("Bulk modulus", "1e6");
+          prm.set("Viscosity", mu);
+          NewtonianFluid fluid;
+          fluid.set_common(1000, k);
+          fluid.parse_parameters(prm);
+          BOOST_TEST(tangent_error(fluid, k) < 1e-6);
+        }
 }
 
 BOOST_AUTO_TEST_CASE(symmetry_is_declared_only_for_hyperelastic_models)

@@ -204,6 +204,15 @@ namespace mpm
         return false;
       }
 
+      /// Whether the model resists a shear at rest. A fluid does not: its
+      /// only shear stress is viscous, so a quasi-static step (no
+      /// inertia) has no equilibrium to find for it.
+      virtual bool
+      has_static_shear_stiffness() const
+      {
+        return true;
+      }
+
       /// Reference mass density rho_0.
       double
       reference_density() const

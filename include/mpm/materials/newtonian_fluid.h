@@ -39,6 +39,15 @@ namespace mpm
                     SymmetricTensor<2, 3>   &stress,
                     const ArrayView<double> &history) const override;
 
+      /// d sigma / d h of the step's displacement gradient h = dt L:
+      /// the equation of state's through dJ = J tr(f^-1 dh), the
+      /// viscous stress's 2 mu dev(sym dh) / dt.
+      bool
+      stress_tangent(const PointKinematics         &kinematics,
+                     const SymmetricTensor<2, 3>   &stress_n,
+                     const ArrayView<const double> &history_n,
+                     Tensor<4, 3>                  &tangent) const override;
+
       /// psi(J) with p = -dpsi/dJ and psi(1) = 0; viscous work is
       /// dissipated, not stored.
       double
@@ -72,9 +81,19 @@ namespace mpm
         return true;
       }
 
+      bool
+      has_static_shear_stiffness() const override
+      {
+        return false;
+      }
+
       /// Pressure p(J) from the equation of state.
       double
       pressure(const double J) const;
+
+      /// dp/dJ of the equation of state.
+      double
+      pressure_derivative(const double J) const;
 
       double
       viscosity() const

@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# How the implicit step scales with the grid: for each case and number of
+# ranks, the unknowns (dim x grid nodes), Newton iterations, AMG-Krylov
+# iterations per linear solve and wall time per load step (the step's
+# phases from mpm's timer table: set-up, assembly, solve, stress update,
+# G2P, position update; without the run's set-up and output).
+# Cases:
+#   cook-a  Cook's membrane, plane stress (prm/cooks_membrane.prm), one
+#           load step, h = 2, 1, 0.5, 0.25 (AMG-GMRES)
+#   cook-b  the same nearly incompressible in plane strain
+#           (prm/cooks_membrane_plane_strain.prm, nu = 0.4999)
+#   block3d a unit cube of linear elastic material (nu = 0.3) on a fixed
+#           base under its own weight, 4 to 32 cells per direction with
+#           2^3 particles per cell, one load step (AMG-GMRES)
+# Usage: [CASES="cook-a cook-b block3d"] [RANKS="1 2"] scripts/implicit_scaling.sh
+# About 3 minutes for everything on 2 cores. Run it on an otherwise idle
+# machine.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mpm=${MPM:-$root/build/mpm}
+cases=${CASES:-cook-a cook-b block3d}
+ranks_list=${RANKS:-1 2}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+cook() { # prm constants h
+  local nx ny nb
+  read -r nx ny nb <<< "$(python3 -c "print(round(52/$3), round(68/$3), round(48/$3))")"
+  cat <<PRM
+include $root/prm/$1
+set Constants = $2, r_fit=$3, tr=250, rho=1
+subsection Grid
+  set Subdivisions = $nx, $ny
+end
+subsection Time stepping
+  set Integrator = quasi-static
+  set Time step control = fixed
+  set Time step = 250
+  set End time = 250
+  set Damping coefficient = 0
+end
+subsection Output
+  set Directory = $work/out
+  set Interval = 250
+  set Write vtu = false
+  set Write csv = false
+end
+subsection Bodies
+  subsection Body 0
+    set Subdivisions = $nb
+  end
+end
+PRM
+}
+
+block3d() { # cells per direction
+  cat <<PRM
+set Dimension = 3
+subsection Grid
+  set Lower corner = 0, 0, 0
+  set Upper corner = 1, 1, 1
+  set Subdivisions = $1
+end
+subsection Time stepping
+  set Integrator = quasi-static
+  set Time step control = fixed
+  set Time step = 1
+  set End time = 1
+end
+subsection Boundary conditions
+  # the base z = 0 fixed
+  set Fixed boundary ids = 4
+end
+subsection Output
+  set Directory = $work/out
+  set Interval = 1
+  set Write vtu = false
+  set Write csv = false
+end
+subsection Bodies
+  subsection Body 0
+    set Lower corner = 0, 0, 0
+    set Upper corner = 1, 1, 1
+    set Subdivisions = $1
+    set Particles per direction = 2
+    set Body force = 0; 0; -10*t
+    subsection Material
+      set Model = linear elastic
+      set Density = 1000
+      subsection Linear elastic
+        set Young's modulus = 1e6
+        set Poisson's ratio = 0.3
+      end
+    end
+  end
+end
+PRM
+}
+
+echo "| case | ranks | grid | unknowns | particles | Newton | linear per solve | time per step [s] |"
+echo "|---|---|---|---|---|---|---|---|"
+for c in $cases; do
+  case $c in
+    cook-a|cook-b) sizes="2 1 0.5 0.25" ;;
+    block3d) sizes="4 8 16 32" ;;
+    *) echo "unknown case $c" >&2; exit 1 ;;
+  esac
+  for ranks in $ranks_list; do
+    for s in $sizes; do
+      case $c in
+        cook-a) cook cooks_membrane.prm "F=1e-3, uy_ref=25.19, uy_ref_mid=23.967, E=1" "$s" ;;
+        cook-b) cook cooks_membrane_plane_strain.prm "F=1, uy_ref=0.07771, uy_ref_mid=0.07404, E=250" "$s" ;;
+        block3d) block3d "$s" ;;
+      esac > "$work/case.prm"
+      rm -rf "$work/out"
+      (cd "$work" && mpirun -np "$ranks" "$mpm" case.prm > log) \
+        || { tail -5 "$work/log"; exit 1; }
+      python3 - "$work/log" "$work/out/statistics.txt" "$c" "$ranks" "$s" <<'PY'
+import re
+import sys
+log, stats, case, ranks, size = sys.argv[1:]
+text = open(log).read()
+nodes = int(re.search(r"grid: \d+ cells, (\d+) nodes", text).group(1))
+particles = int(re.search(r"particles: (\d+)", text).group(1))
+dim = 3 if case == "block3d" else 2
+phases = ("implicit set-up", "implicit assembly", "implicit linear solve",
+          "stress update", "G2P", "position update", "stress filter")
+wall = sum(float(m.group(1)) for m in
+           re.finditer(r"\| (?:%s) +\| +\d+ \| +([0-9.e+-]+)s" %
+                       "|".join(phases), text))
+rows = [l.split() for l in open(stats)]
+v = dict(zip(rows[0], rows[-1]))
+steps = int(float(v["step"]))
+newton = int(float(v["newton_iterations"]))
+linear = int(float(v["linear_iterations"]))
+grid = f"h = {size}" if case != "block3d" else f"{size}^3"
+print("| %s | %s | %s | %d | %d | %d | %.1f | %.2f |" % (
+    case, ranks, grid, dim * nodes, particles, newton,
+    linear / max(newton, 1), wall / max(steps, 1)))
+PY
+    done
+  done
+done
