@@ -6,14 +6,15 @@
 # G2P, position update; without the run's set-up and output).
 # Cases:
 #   cook-a  Cook's membrane, plane stress (prm/cooks_membrane.prm), one
-#           load step, h = 2, 1, 0.5, 0.25 (AMG-GMRES)
+#           load step, h = 2, 1, 0.5, 0.25, 0.125 (AMG-GMRES)
 #   cook-b  the same nearly incompressible in plane strain
-#           (prm/cooks_membrane_plane_strain.prm, nu = 0.4999)
+#           (prm/cooks_membrane_plane_strain.prm, nu = 0.4999), h = 2, 1,
+#           0.5
 #   block3d a unit cube of linear elastic material (nu = 0.3) on a fixed
 #           base under its own weight, 4 to 32 cells per direction with
 #           2^3 particles per cell, one load step (AMG-GMRES)
 # Usage: [CASES="cook-a cook-b block3d"] [RANKS="1 2"] scripts/implicit_scaling.sh
-# About 3 minutes for everything on 2 cores. Run it on an otherwise idle
+# About 5 minutes for everything on 2 cores. Run it on an otherwise idle
 # machine.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -103,7 +104,8 @@ echo "| case | ranks | grid | unknowns | particles | Newton | linear per solve |
 echo "|---|---|---|---|---|---|---|---|"
 for c in $cases; do
   case $c in
-    cook-a|cook-b) sizes="2 1 0.5 0.25" ;;
+    cook-a) sizes="2 1 0.5 0.25 0.125" ;;
+    cook-b) sizes="2 1 0.5" ;;
     block3d) sizes="4 8 16 32" ;;
     *) echo "unknown case $c" >&2; exit 1 ;;
   esac

@@ -20,7 +20,9 @@
 # theta-bar-node (= node), each with a suffix _h10, _h40, _h80 or _h160
 # for another grid; VARIANTS="..." runs a subset; CFL=... another CFL
 # number than the parameter file's 0.5. NP=2 runs every variant
-# on 2 MPI ranks (the _h160 ones always run on 2).
+# on 2 MPI ranks (the _h160 ones always run on 2). NEWMARK=<step> runs
+# every variant by Integrator = Newmark at that step instead (doc/implicit.md,
+# section 5: VARIANTS=theta-bar NEWMARK=0.001).
 # Usage: scripts/water_column_study.sh [OUT] [grid|fine]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -62,6 +64,9 @@ end
 subsection Time stepping
   set End time = $end
   ${CFL:+set CFL number = $CFL}
+  ${NEWMARK:+set Integrator = Newmark}
+  ${NEWMARK:+set Time step control = fixed}
+  ${NEWMARK:+set Time step = $NEWMARK}
 end
 subsection Output
   set Directory = $dir
