@@ -7,8 +7,9 @@
 # (prm/cooks_membrane_plane_strain.prm, nu = 0.4999).
 # FAMILY=uGIMP|cpGIMP|CPDI|CPDI2 runs that shape-function family instead
 # of standard MPM; FILTER=mass|compliance adds the assumed-stress filter
-# with that metric; SMOOTHING=cell adds theta-bar.
-# Usage: [CASE=b] [RANKS=n] [FAMILY=...] [FILTER=...] [SMOOTHING=cell]
+# with that metric; SMOOTHING=cell adds theta-bar; SUPPORT=x sets
+# Implicit solver/Minimum nodal support.
+# Usage: [CASE=b] [RANKS=n] [FAMILY=...] [FILTER=...] [SMOOTHING=cell] [SUPPORT=x]
 #        scripts/cooks_membrane_implicit.sh [h values...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -45,6 +46,9 @@ subsection Time stepping
 end
 subsection Shape functions
   set Family = $family
+end
+subsection Implicit solver
+  set Minimum nodal support = ${SUPPORT:-1e-4}
 end
 subsection Output
   set Directory = $work/out

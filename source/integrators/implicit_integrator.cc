@@ -916,37 +916,43 @@ namespace mpm
       }
     else
       {
-        // The explicit step's filtered force (IntegratedFieldForce) as a
-        // function of the trial increment: the particles' tau = j sigma
-        // projected onto the cell's assumed-stress field (weights and
-        // places of the start of the step), the field integrated over the
-        // particle domains of the start of the step. That is linear in tau,
-        // so the tangent's column is the same map of the columns' tau
-        // changes: K = G^T H^-1 G_C, with G the field's work on the nodal
-        // motions, H the projection's metric and G_C that of the
-        // material's stress changes.
+        // The explicit step's filtered force as a function of the trial
+        // increment: the particles' tau = j sigma projected onto the
+        // cell's assumed-stress field (weights and places of the start of
+        // the step), and the field's force. Standard MPM integrates the
+        // field over the particle domains of the start of the step
+        // (IntegratedFieldForce); a domain family takes the field at each
+        // particle with its stencil's gradients, V_p sigma*(xi_p) grad
+        // S_ap (ProjectedStressForce). Either is linear in tau, so the
+        // tangent's column is the same map of the columns' tau changes:
+        // K = G^T H^-1 G_C, with G the field's work on the nodal motions,
+        // H the projection's metric and G_C that of the material's stress
+        // changes.
         using L                   = ParticleLayout<dim>;
         constexpr unsigned int nv = shape_functions::n_q1<dim>;
-        const auto            &grid    = state.background;
-        const unsigned int    *nodes   = stencils.nodes();
-        const unsigned int     n       = stencils.n_nodes() * dim;
-        auto                  &filter  = *state.stress_filter;
-        const auto            &geo     = grid.geometry(cell);
-        const unsigned int    *corners = grid.nodes(cell);
+        const auto            &grid        = state.background;
+        const unsigned int    *nodes       = stencils.nodes();
+        const unsigned int     n           = stencils.n_nodes() * dim;
+        auto                  &filter      = *state.stress_filter;
+        const auto            &geo         = grid.geometry(cell);
+        const unsigned int    *corners     = grid.nodes(cell);
+        const bool             per_particle = state.domain_functions != nullptr;
         // (the standard family: the cell's list is its vertices in order)
-        for (unsigned int v = 0; v < nv; ++v)
-          if (v >= stencils.n_nodes() || nodes[v] != corners[v])
-            {
-              error = "the assumed-stress filter of the implicit step "
-                      "needs the cell's vertices as its node list";
-              return false;
-            }
+        if (!per_particle)
+          for (unsigned int v = 0; v < nv; ++v)
+            if (v >= stencils.n_nodes() || nodes[v] != corners[v])
+              {
+                error = "the assumed-stress filter of the implicit step "
+                        "needs the cell's vertices as its node list";
+                return false;
+              }
         Point<dim> centre;
         for (unsigned int d = 0; d < dim; ++d)
           centre[d] = 0.5;
         const Tensor<2, dim> J0 = geo.jacobian(centre);
         filter.begin_cell(J0);
-        double f[nv * dim];
+        filtered_force.resize(per_particle ? n : nv * dim);
+        double *const f = filtered_force.data();
         for (unsigned int b = 0; b < state.bodies.size(); ++b)
           {
             if (!filter.filtered(b))
@@ -969,25 +975,28 @@ namespace mpm
             const auto &projection = filter.projection(b);
             remedies::AssumedStressForce<dim> force;
             force.clear();
-            const bool fills =
-              remedies::AssumedStressForce<dim>::fills(count,
-                                                       V,
-                                                       std::abs(
-                                                         determinant(J0)));
-            const Tensor<2, dim> J0_inverse = invert(J0);
-            p                               = 0;
-            for (const auto &particle : pic)
+            if (!per_particle)
               {
-                const double *prop = particle.get_properties().data();
-                if (points[p++].body != b)
-                  continue;
-                force.add_particle(particle.get_reference_location(),
-                                   fills ? Tensor<2, dim>(
-                                             J0_inverse *
+                const bool fills =
+                  remedies::AssumedStressForce<dim>::fills(count,
+                                                           V,
+                                                           std::abs(
+                                                             determinant(J0)));
+                const Tensor<2, dim> J0_inverse = invert(J0);
+                p                               = 0;
+                for (const auto &particle : pic)
+                  {
+                    const double *prop = particle.get_properties().data();
+                    if (points[p++].body != b)
+                      continue;
+                    force.add_particle(
+                      particle.get_reference_location(),
+                      fills ? Tensor<2, dim>(J0_inverse *
                                              load_matrix<dim>(prop + L::F) *
                                              load_matrix<dim>(prop + L::domain)) :
-                                           Tensor<2, dim>(),
-                                   prop[L::volume]);
+                              Tensor<2, dim>(),
+                      prop[L::volume]);
+                  }
               }
             // f = -(the field's internal force) of stresses tau(p)
             const auto field_force = [&](const auto &tau) {
@@ -1005,19 +1014,43 @@ namespace mpm
                   ++q;
                 }
               double beta[remedies::AssumedStressProjection<dim>::n_beta];
-              std::fill(f, f + nv * dim, 0.);
-              if (projection.solve(sums, beta) !=
+              std::fill(filtered_force.begin(), filtered_force.end(), 0.);
+              if (projection.solve(sums, beta) ==
                   remedies::AssumedStressProjection<dim>::Result::unchanged)
-                force.add_internal_force(geo, projection, beta, f);
+                return;
+              if (!per_particle)
+                {
+                  force.add_internal_force(geo, projection, beta, f);
+                  return;
+                }
+              q = 0;
+              for (const auto &particle : pic)
+                {
+                  if (points[q].body == b)
+                    {
+                      const Tensor<2, dim> sigma =
+                        projection.field(particle.get_reference_location(),
+                                         beta);
+                      for (unsigned int e = stencils.begin(q);
+                           e < stencils.end(q);
+                           ++e)
+                        {
+                          const Tensor<1, dim> fa =
+                            points[q].V_n * (sigma * stencils.gradient(e));
+                          for (unsigned int i = 0; i < dim; ++i)
+                            f[stencils.node(e) * dim + i] -= fa[i];
+                        }
+                    }
+                  ++q;
+                }
             };
             field_force([&](const unsigned int q) { return filtered_taus[q]; });
             double *const f_int = internal_force.begin();
-            for (unsigned int v = 0; v < nv; ++v)
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  cell_rhs(v * dim + d) += f[v * dim + d];
-                  f_int[nodes[v] * dim + d] -= f[v * dim + d];
-                }
+            for (unsigned int r = 0; r < filtered_force.size(); ++r)
+              {
+                cell_rhs(r) += f[r];
+                f_int[nodes[r / dim] * dim + r % dim] -= f[r];
+              }
             if (!with_matrix)
               continue;
             for (unsigned int col = 0; col < n; ++col)
@@ -1025,7 +1058,7 @@ namespace mpm
                 field_force([&](const unsigned int q) {
                   return filtered_changes[q * n + col];
                 });
-                for (unsigned int r = 0; r < nv * dim; ++r)
+                for (unsigned int r = 0; r < filtered_force.size(); ++r)
                   cell_matrix(r, col) -= f[r];
               }
           }

@@ -68,15 +68,6 @@ namespace mpm
           const std::string here     = context.where + "/Locking remedies: ";
           if (context.time.integrator !=
                 Parameters::TimeStepping::Integrator::explicit_dynamics &&
-              context.family != shape_functions::Family::standard)
-            throw InputError(
-              here + "Stress filter = assumed stress of the implicit "
-                     "integrator is linearized for Shape functions/Family = "
-                     "standard only (a domain family's filtered force is "
-                     "not built there); use the standard family or "
-                     "Integrator = explicit");
-          if (context.time.integrator !=
-                Parameters::TimeStepping::Integrator::explicit_dynamics &&
               !write_back)
             throw InputError(
               here + "Filtered stress = force only has no linearization for "

@@ -236,6 +236,8 @@ namespace mpm
     /// its change for each column of the cell's matrix
     std::vector<dealii::SymmetricTensor<2, dim>> filtered_taus;
     std::vector<dealii::SymmetricTensor<2, dim>> filtered_changes;
+    /// the filtered force of one body in one cell (add_filtered_force())
+    std::vector<double> filtered_force;
     dealii::FullMatrix<double>                   cell_matrix;
     dealii::Vector<double>                       cell_rhs;
     std::vector<dealii::types::global_dof_index> cell_dofs;
