@@ -26,36 +26,6 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-cook() { # prm constants h
-  local nx ny nb
-  read -r nx ny nb <<< "$(python3 -c "print(round(52/$3), round(68/$3), round(48/$3))")"
-  cat <<PRM
-include $root/prm/$1
-set Constants = $2, r_fit=$3, tr=250, rho=1
-subsection Grid
-  set Subdivisions = $nx, $ny
-end
-subsection Time stepping
-  set Integrator = quasi-static
-  set Time step control = fixed
-  set Time step = 250
-  set End time = 250
-  set Damping coefficient = 0
-end
-subsection Output
-  set Directory = $work/out
-  set Interval = 250
-  set Write vtu = false
-  set Write csv = false
-end
-subsection Bodies
-  subsection Body 0
-    set Subdivisions = $nb
-  end
-end
-PRM
-}
-
 block3d() { # cells per direction
   cat <<PRM
 set Dimension = 3
@@ -112,8 +82,8 @@ for c in $cases; do
   for ranks in $ranks_list; do
     for s in $sizes; do
       case $c in
-        cook-a) cook cooks_membrane.prm "F=1e-3, uy_ref=25.19, uy_ref_mid=23.967, E=1" "$s" ;;
-        cook-b) cook cooks_membrane_plane_strain.prm "F=1, uy_ref=0.07771, uy_ref_mid=0.07404, E=250" "$s" ;;
+        cook-a) "$root/scripts/cooks_membrane_implicit_case.sh" "$s" "$work/out" ;;
+        cook-b) CASE=b "$root/scripts/cooks_membrane_implicit_case.sh" "$s" "$work/out" ;;
         block3d) block3d "$s" ;;
       esac > "$work/case.prm"
       rm -rf "$work/out"
