@@ -13,7 +13,9 @@
 # FAMILIES (default "standard") lists the shape-function families to run
 # each variant with; a family other than standard is named in the
 # variant, e.g. theta-bar-cpGIMP; their domains are cut at the grid's
-# walls (Domain outside the grid = clamp).
+# walls (Domain outside the grid = clamp). REMEDIES (default "standard
+# theta-bar") lists the variants; filter is the assumed-stress filter with
+# the compliance metric.
 # Usage: scripts/strip_footing_study.sh [OUT] [h values...]   (MPM=...)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -26,9 +28,10 @@ echo "|---|---|---|---|---|---|---|---|---|"
 for h in ${@:-0.25 0.125 0.0625}; do
   read -r nx ny ns nf <<< "$(python3 -c "print(round(5/$h), round(6.25/$h), round(5/$h), round(0.5/$h))")"
   for family in ${FAMILIES:-standard}; do
-  for remedy in standard theta-bar; do
-    smoothing=none
+  for remedy in ${REMEDIES:-standard theta-bar}; do
+    smoothing=none filter=none
     [ $remedy = theta-bar ] && smoothing=cell
+    [ $remedy = filter ] && filter="assumed stress"
     variant=$remedy
     [ $family = standard ] || variant=$remedy-$family
     dir="$out/${variant}_$h"
@@ -51,6 +54,8 @@ subsection Bodies
     set Subdivisions = $ns, $ns
     subsection Locking remedies
       set Volumetric smoothing = $smoothing
+      set Stress filter = $filter
+      set Filter metric = compliance
     end
   end
   subsection Body 1
