@@ -2,8 +2,9 @@
 # The vibrating cantilever (prm/cantilever_newmark.prm) by the Newmark
 # integrator: the period over the FE reference for standard MPM and the
 # assumed-stress filter (mass and compliance metric) at 1, 2 and 4 cells
-# through the depth at a step of 0.01 s, and the compliance filter at 2
-# cells over steps from 5 to 84 times the explicit stability limit.
+# through the depth at a step of 0.01 s, the compliance filter at 2
+# cells over steps from 5 to 84 times the explicit stability limit, and
+# uGIMP and CPDI (CPDI also with the compliance filter) at 2 cells.
 # Writes OUT/table.txt: cells variant dt dt/limit T/T_FE energy change per
 # period, Newton iterations per step, wall time. T_FE from the FE
 # reference solver (build/mpm-fe prm/fe_cantilever_modal.prm). About 1 min.
@@ -20,13 +21,14 @@ T_FE=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
 echo "T_FE = $T_FE s (mpm-fe)"
 table="$out/table.txt"
 echo "cells variant dt dt_over_limit T_over_T_FE energy_change_per_period newton_per_step wall_s" > "$table"
-run() { # cells variant dt
-  local n=$1 variant=$2 dt=$3 filter=none metric=mass
-  case $variant in
+run() { # cells [FAMILY:]variant dt
+  local n=$1 variant=$2 dt=$3 filter=none metric=mass family=standard
+  case $variant in *:*) family=${variant%%:*} ;; esac
+  case ${variant#*:} in
     filter-mass) filter="assumed stress" ;;
     filter-compliance) filter="assumed stress"; metric=compliance ;;
   esac
-  local dir="$out/${n}_${variant}_$dt"
+  local dir="$out/${n}_${variant/:/_}_$dt"
   cat > "$out/case.prm" <<PRM
 include $root/prm/cantilever_newmark.prm
 subsection Grid
@@ -34,6 +36,10 @@ subsection Grid
 end
 subsection Time stepping
   set Time step = $dt
+end
+subsection Shape functions
+  set Family = $family
+  set Domain outside the grid = clamp
 end
 subsection Output
   set Directory = $dir
@@ -78,3 +84,4 @@ for n in 1 2 4; do
   for v in standard filter-mass filter-compliance; do run $n $v 0.01; done
 done
 for dt in 0.0025 0.005 0.02 0.04; do run 2 filter-compliance $dt; done
+for v in uGIMP:standard CPDI:standard CPDI:filter-compliance; do run 2 $v 0.01; done
