@@ -1168,11 +1168,8 @@ namespace mpm
         for (unsigned int c = 0; c < dim; ++c)
           {
             const unsigned int k = i * dim + c;
-            const double       a = new_acceleration(k, dt);
-            const double v = velocity_n.local_element(k) +
-                             dt * ((1 - gamma) * acceleration_n.local_element(k) +
-                                   gamma * a);
-            const double f = m * (a + damping * v);
+            const double v = velocity_n.local_element(k) + velocity_change(k, dt);
+            const double f = m * (new_acceleration(k, dt) + damping * v);
             rhs(c)         = -f;
             matrix(c, c)   = m * stiffness;
             norm2 += f * f;
@@ -1206,9 +1203,7 @@ namespace mpm
                                          c) = increment.local_element(k) / dt;
           state.kinematics.local_element(i * K::n_components + K::increment +
                                          c) =
-            dynamic ? dt * ((1 - gamma) * acceleration_n.local_element(k) +
-                            gamma * new_acceleration(k, dt)) :
-                      0.;
+            dynamic ? velocity_change(k, dt) : 0.;
         }
     // A rigid body moves as prescribed, not with the grid.
     using L = ParticleLayout<dim>;

@@ -91,8 +91,7 @@ namespace mpm
                                Tensor<4, 3> &tangent) const
     {
       const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
-      const Tensor<2, 3> f_inverse =
-        dealii::invert(I + point.dt * point.velocity_gradient);
+      const Tensor<2, 3> f_inverse = point.step_inverse();
       const double       J     = jacobian(point.F);
       const Tensor<2, 3> b     = point.F * dealii::transpose(point.F);
       const Tensor<2, 3> sigma = cauchy_stress(point.F);

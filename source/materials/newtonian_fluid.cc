@@ -117,9 +117,7 @@ namespace mpm
                                    const ArrayView<const double> &,
                                    Tensor<4, 3> &tangent) const
     {
-      const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
-      const Tensor<2, 3> f_inverse =
-        dealii::invert(I + point.dt * point.velocity_gradient);
+      const Tensor<2, 3> f_inverse = point.step_inverse();
       const double J          = jacobian(point.F);
       const double dp_dJ      = pressure_derivative(J);
       const double eta        = mu / point.dt;

@@ -168,6 +168,14 @@ namespace mpm
       return (u - dt * velocity_n.local_element(k)) / (beta * dt * dt) -
              (0.5 / beta - 1) * acceleration_n.local_element(k);
     }
+    /// Newmark's v_n+1 - v_n of nodal entry k for the increment's value
+    /// there.
+    double
+    velocity_change(const unsigned int k, const double dt) const
+    {
+      return dt * ((1 - gamma) * acceleration_n.local_element(k) +
+                   gamma * new_acceleration(k, dt));
+    }
 
     /// The displacement of rigid body @p r (index into rigid_bodies) from
     /// t to t + dt (midpoint rule).

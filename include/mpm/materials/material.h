@@ -45,6 +45,16 @@ namespace mpm
       Tensor<2, 3> velocity_gradient; ///< L = grad v (current configuration)
       Tensor<2, 3> F;                 ///< deformation gradient, end of step
       double       dt = 0;            ///< step length
+
+      /// f^-1 of the step's deformation f = I + dt L, for the tangents'
+      /// geometric terms (dJ = J tr(f^-1 dh)).
+      Tensor<2, 3>
+      step_inverse() const
+      {
+        return dealii::invert(
+          Tensor<2, 3>(dealii::unit_symmetric_tensor<3>()) +
+          dt * velocity_gradient);
+      }
     };
 
     /**
