@@ -87,13 +87,13 @@ namespace mpm
     state.stable_dt = std::numeric_limits<double>::max();
     if (dynamic)
       {
-        const double limit = Utilities::MPI::min(
-          stable_time_step(state.background,
-                           state.particle_handler,
-                           state.bodies),
-          state.comm);
-        state.pcout << "  Newmark step " << state.params.time.time_step
-                    << " = " << state.params.time.time_step / limit
+        const double limit =
+          Utilities::MPI::min(stable_time_step(state.background,
+                                               state.particle_handler,
+                                               state.bodies),
+                              state.comm);
+        state.pcout << "  Newmark step " << state.params.time.time_step << " = "
+                    << state.params.time.time_step / limit
                     << " times the explicit stability limit " << limit
                     << " of the initial state" << std::endl;
       }
@@ -293,8 +293,8 @@ namespace mpm
     // Nodes without mass (no particle reaches them) are not unknowns.
     compute_nodal_fields();
     scan_stencils();
-    using P               = transfer::P2GLayout<dim>;
-    const auto  &grid     = state.background;
+    using P          = transfer::P2GLayout<dim>;
+    const auto &grid = state.background;
     // Newmark's inertia holds the nodes that slivers reach (their mass
     // and stiffness vanish together); the threshold is quasi-static only.
     const double fraction =
@@ -813,10 +813,9 @@ namespace mpm
         const Tensor<2, dim> P = q.j * s * transpose(q.f_inv);
         for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
           {
-            const unsigned int   a  = stencils.node(e);
-            const Tensor<1, dim> fa = filtered ?
-                                        Tensor<1, dim>() :
-                                        q.V_n * (P * stencils.gradient(e));
+            const unsigned int   a = stencils.node(e);
+            const Tensor<1, dim> fa =
+              filtered ? Tensor<1, dim>() : q.V_n * (P * stencils.gradient(e));
             for (unsigned int i = 0; i < dim; ++i)
               {
                 const double ext = stencils.value(e) * load.body[i];
@@ -860,13 +859,15 @@ namespace mpm
                 dh[k] = q.G[b];
                 if (filtered)
                   {
-                    filtered_changes[p * n + b * dim + k] = kirchhoff_change(
-                      s,
-                      q.j,
-                      q.f_inv,
-                      T,
-                      dh,
-                      smoothed ? smoothing->derivative(q, total, b, k) : dh);
+                    filtered_changes[p * n + b * dim + k] =
+                      kirchhoff_change(s,
+                                       q.j,
+                                       q.f_inv,
+                                       T,
+                                       dh,
+                                       smoothed ?
+                                         smoothing->derivative(q, total, b, k) :
+                                         dh);
                     continue;
                   }
                 const Tensor<2, dim> dP =
@@ -928,14 +929,14 @@ namespace mpm
         // K = G^T H^-1 G_C, with G the field's work on the nodal motions,
         // H the projection's metric and G_C that of the material's stress
         // changes.
-        using L                   = ParticleLayout<dim>;
-        constexpr unsigned int nv = shape_functions::n_q1<dim>;
-        const auto            &grid        = state.background;
-        const unsigned int    *nodes       = stencils.nodes();
-        const unsigned int     n           = stencils.n_nodes() * dim;
-        auto                  &filter      = *state.stress_filter;
-        const auto            &geo         = grid.geometry(cell);
-        const unsigned int    *corners     = grid.nodes(cell);
+        using L                             = ParticleLayout<dim>;
+        constexpr unsigned int nv           = shape_functions::n_q1<dim>;
+        const auto            &grid         = state.background;
+        const unsigned int    *nodes        = stencils.nodes();
+        const unsigned int     n            = stencils.n_nodes() * dim;
+        auto                  &filter       = *state.stress_filter;
+        const auto            &geo          = grid.geometry(cell);
+        const unsigned int    *corners      = grid.nodes(cell);
         const bool             per_particle = state.domain_functions != nullptr;
         // (the standard family: the cell's list is its vertices in order)
         if (!per_particle)
@@ -972,16 +973,13 @@ namespace mpm
               }
             if (count == 0)
               continue;
-            const auto &projection = filter.projection(b);
+            const auto                       &projection = filter.projection(b);
             remedies::AssumedStressForce<dim> force;
             force.clear();
             if (!per_particle)
               {
-                const bool fills =
-                  remedies::AssumedStressForce<dim>::fills(count,
-                                                           V,
-                                                           std::abs(
-                                                             determinant(J0)));
+                const bool fills = remedies::AssumedStressForce<dim>::fills(
+                  count, V, std::abs(determinant(J0)));
                 const Tensor<2, dim> J0_inverse = invert(J0);
                 p                               = 0;
                 for (const auto &particle : pic)
@@ -989,13 +987,14 @@ namespace mpm
                     const double *prop = particle.get_properties().data();
                     if (points[p++].body != b)
                       continue;
-                    force.add_particle(
-                      particle.get_reference_location(),
-                      fills ? Tensor<2, dim>(J0_inverse *
-                                             load_matrix<dim>(prop + L::F) *
-                                             load_matrix<dim>(prop + L::domain)) :
-                              Tensor<2, dim>(),
-                      prop[L::volume]);
+                    force.add_particle(particle.get_reference_location(),
+                                       fills ?
+                                         Tensor<2, dim>(
+                                           J0_inverse *
+                                           load_matrix<dim>(prop + L::F) *
+                                           load_matrix<dim>(prop + L::domain)) :
+                                         Tensor<2, dim>(),
+                                       prop[L::volume]);
                   }
               }
             // f = -(the field's internal force) of stresses tau(p)
@@ -1006,11 +1005,11 @@ namespace mpm
               for (const auto &particle : pic)
                 {
                   if (points[q].body == b)
-                    projection.add(sums,
-                                   particle.get_reference_location(),
-                                   filter.weight(
-                                     b, particle.get_properties().data()),
-                                   tau(q));
+                    projection.add(
+                      sums,
+                      particle.get_reference_location(),
+                      filter.weight(b, particle.get_properties().data()),
+                      tau(q));
                   ++q;
                 }
               double beta[remedies::AssumedStressProjection<dim>::n_beta];
@@ -1083,8 +1082,7 @@ namespace mpm
         return gather_cell(weights, pic, t, error) &&
                add_cell_system(cell, pic, dt, with_matrix, error);
       });
-    const double inertia =
-      with_inertia ? add_inertia(dt, with_matrix) : 0.;
+    const double inertia = with_inertia ? add_inertia(dt, with_matrix) : 0.;
     // Every rank takes part in the exchanges, whatever happened here.
     system.finish_assembly(with_matrix);
     internal_force.compress(VectorOperation::add);
@@ -1128,7 +1126,7 @@ namespace mpm
                                  std::to_string(t) + ": " + error);
         return false;
       }
-    with_inertia = true;
+    with_inertia   = true;
     acceleration_n = 0.;
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       {
@@ -1154,10 +1152,11 @@ namespace mpm
     // The lumped mass's force m (a_n+1 + c v_n+1) and its derivative
     // m (1 / (beta dt^2) + c gamma / (beta dt)) by the increment, on the
     // owned nodes (each once).
-    using P                 = transfer::P2GLayout<dim>;
-    const double stiffness  = 1 / (beta * dt * dt) + damping * gamma / (beta * dt);
-    double       norm2      = 0;
-    unsigned int node[1];
+    using P = transfer::P2GLayout<dim>;
+    const double stiffness =
+      1 / (beta * dt * dt) + damping * gamma / (beta * dt);
+    double             norm2 = 0;
+    unsigned int       node[1];
     FullMatrix<double> matrix(dim, dim);
     Vector<double>     rhs(dim);
     for (unsigned int i = 0; i < state.background.n_owned_nodes(); ++i)
@@ -1168,7 +1167,8 @@ namespace mpm
         for (unsigned int c = 0; c < dim; ++c)
           {
             const unsigned int k = i * dim + c;
-            const double v = velocity_n.local_element(k) + velocity_change(k, dt);
+            const double       v =
+              velocity_n.local_element(k) + velocity_change(k, dt);
             const double f = m * (new_acceleration(k, dt) + damping * v);
             rhs(c)         = -f;
             matrix(c, c)   = m * stiffness;
@@ -1198,7 +1198,7 @@ namespace mpm
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
       for (unsigned int c = 0; c < dim; ++c)
         {
-          const unsigned int k = i * dim + c;
+          const unsigned int k              = i * dim + c;
           state.kinematics.local_element(i * K::n_components + K::velocity +
                                          c) = increment.local_element(k) / dt;
           state.kinematics.local_element(i * K::n_components + K::increment +

@@ -90,11 +90,11 @@ namespace mpm
                                const ArrayView<const double> &,
                                Tensor<4, 3> &tangent) const
     {
-      const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
+      const Tensor<2, 3> I         = dealii::unit_symmetric_tensor<3>();
       const Tensor<2, 3> f_inverse = point.step_inverse();
-      const double       J     = jacobian(point.F);
-      const Tensor<2, 3> b     = point.F * dealii::transpose(point.F);
-      const Tensor<2, 3> sigma = cauchy_stress(point.F);
+      const double       J         = jacobian(point.F);
+      const Tensor<2, 3> b         = point.F * dealii::transpose(point.F);
+      const Tensor<2, 3> sigma     = cauchy_stress(point.F);
       const double       mu = constants.mu(), lambda = constants.lambda();
       for (unsigned int k = 0; k < 3; ++k)
         for (unsigned int l = 0; l < 3; ++l)

@@ -118,20 +118,20 @@ namespace mpm
                                    Tensor<4, 3> &tangent) const
     {
       const Tensor<2, 3> f_inverse = point.step_inverse();
-      const double J          = jacobian(point.F);
-      const double dp_dJ      = pressure_derivative(J);
-      const double eta        = mu / point.dt;
-      tangent                 = Tensor<4, 3>();
+      const double       J         = jacobian(point.F);
+      const double       dp_dJ     = pressure_derivative(J);
+      const double       eta       = mu / point.dt;
+      tangent                      = Tensor<4, 3>();
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
           for (unsigned int k = 0; k < 3; ++k)
             for (unsigned int l = 0; l < 3; ++l)
               tangent[i][j][k][l] =
-                (i == j ? -dp_dJ * J * f_inverse[l][k] -
-                            (k == l ? 2 * eta / 3 : 0.) :
-                          0.) +
-                eta * ((i == k && j == l ? 1. : 0.) +
-                       (i == l && j == k ? 1. : 0.));
+                (i == j ?
+                   -dp_dJ * J * f_inverse[l][k] - (k == l ? 2 * eta / 3 : 0.) :
+                   0.) +
+                eta *
+                  ((i == k && j == l ? 1. : 0.) + (i == l && j == k ? 1. : 0.));
       return true;
     }
 

@@ -116,26 +116,27 @@ namespace mpm
     TimeStepping::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Time stepping");
-      end_time            = prm.get_double("End time");
+      end_time                          = prm.get_double("End time");
       const std::string integrator_name = prm.get("Integrator");
-      integrator = integrator_name == "quasi-static" ? Integrator::quasi_static :
-                   integrator_name == "Newmark"      ? Integrator::newmark :
-                                                       Integrator::explicit_dynamics;
-      newmark_beta  = prm.get_double("Newmark beta");
-      newmark_gamma = prm.get_double("Newmark gamma");
-      const std::string s = prm.get("Scheme");
-      scheme              = s == "USF" ? Scheme::usf :
-                            s == "USL" ? Scheme::usl :
-                                         Scheme::musl;
-      step_control        = prm.get("Time step control") == "fixed" ?
-                              StepControl::fixed :
-                              StepControl::cfl;
-      time_step           = prm.get_double("Time step");
-      cfl_number          = prm.get_double("CFL number");
-      flip_fraction       = prm.get_double("FLIP fraction");
-      apic                = prm.get("Velocity transfer") == "APIC";
-      damping             = prm.get_double("Damping coefficient");
-      max_steps           = prm.get_integer("Maximum number of steps");
+      integrator                        = integrator_name == "quasi-static" ?
+                                            Integrator::quasi_static :
+                                          integrator_name == "Newmark" ? Integrator::newmark :
+                                                                         Integrator::explicit_dynamics;
+      newmark_beta                      = prm.get_double("Newmark beta");
+      newmark_gamma                     = prm.get_double("Newmark gamma");
+      const std::string s               = prm.get("Scheme");
+      scheme                            = s == "USF" ? Scheme::usf :
+                                          s == "USL" ? Scheme::usl :
+                                                       Scheme::musl;
+      step_control  = prm.get("Time step control") == "fixed" ?
+                        StepControl::fixed :
+                        StepControl::cfl;
+      time_step     = prm.get_double("Time step");
+      cfl_number    = prm.get_double("CFL number");
+      flip_fraction = prm.get_double("FLIP fraction");
+      apic          = prm.get("Velocity transfer") == "APIC";
+      damping       = prm.get_double("Damping coefficient");
+      max_steps     = prm.get_integer("Maximum number of steps");
       prm.leave_subsection();
       if (integrator == Integrator::quasi_static)
         {

@@ -65,7 +65,7 @@ namespace mpm
         void
         check(const Context &context) const override
         {
-          const std::string here     = context.where + "/Locking remedies: ";
+          const std::string here = context.where + "/Locking remedies: ";
           if (context.time.integrator !=
                 Parameters::TimeStepping::Integrator::explicit_dynamics &&
               !write_back)
@@ -73,7 +73,7 @@ namespace mpm
               here + "Filtered stress = force only has no linearization for "
                      "the implicit Time stepping/Integrator (quasi-static, "
                      "Newmark); use Filtered stress = written back");
-          const auto       &material = context.material;
+          const auto &material = context.material;
           if (context.dimension == 1)
             throw InputError(context.where +
                              ": Locking remedies/Stress filter = assumed "

@@ -247,11 +247,9 @@ namespace mpm
                   "fixed " + Utilities::to_string(p.time.time_step) :
                   "CFL " + Utilities::to_string(p.time.cfl_number))
             << " (stability limit now " << stable_time_step() << ")\n";
-    else if (p.time.integrator ==
-             Parameters::TimeStepping::Integrator::newmark)
+    else if (p.time.integrator == Parameters::TimeStepping::Integrator::newmark)
       pcout << " (beta " << p.time.newmark_beta << ", gamma "
-            << p.time.newmark_gamma << "), end time " << p.time.end_time
-            << '\n'
+            << p.time.newmark_gamma << "), end time " << p.time.end_time << '\n'
             << "  time step: fixed " << p.time.time_step << '\n';
     else
       pcout << ", end time " << p.time.end_time << '\n'

@@ -22,8 +22,8 @@ namespace
   {
     return "include " SOURCE_DIR "/../../prm/cantilever_beam.prm\n"
            "subsection Time stepping\n" +
-           integrator + "  set Damping coefficient = " +
-           std::to_string(damping) +
+           integrator +
+           "  set Damping coefficient = " + std::to_string(damping) +
            "\n"
            "end\n"
            "subsection Output\n"
@@ -60,7 +60,7 @@ namespace
       const auto s = sim.statistics();
       return s.kinetic_energy + s.strain_energy;
     };
-    double              E1 = 0;
+    double E1 = 0;
     while (up.size() < periods + 1 && sim.time() < 5)
       {
         const double t_old = sim.time();
@@ -106,8 +106,8 @@ main(int argc, char **argv)
                    T_standard / T_FE);
   // Mass-proportional damping c: the energy of a mode decays as
   // exp(-c t) (light damping, the period barely changes).
-  const double c                 = 1;
-  const auto [T_damped, damped]  = period("assumed stress", c);
+  const double c                = 1;
+  const auto [T_damped, damped] = period("assumed stress", c);
   mpm_test::check_small("damped: energy ratio over a period / exp(-c T) - 1",
                         damped / energy_ratio / std::exp(-c * T_damped) - 1,
                         0.02);

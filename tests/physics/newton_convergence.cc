@@ -211,9 +211,9 @@ end)");
                          const double       smallest_plastic,
                          const bool         median,
                          const std::string &metric = "none") {
-    const std::string prefix =
-      "Cook's membrane, " + (family == "standard" ? "" : family + ", ") +
-      (metric == "none" ? "" : metric + " filter, ");
+    const std::string prefix = "Cook's membrane, " +
+                               (family == "standard" ? "" : family + ", ") +
+                               (metric == "none" ? "" : metric + " filter, ");
     const bool        smoothed = smoothing == "cell";
     const std::string elastic_name =
       prefix + (smoothed ? "neo-Hookean, F-bar" : "neo-Hookean");
@@ -224,8 +224,16 @@ end)");
     mpm_test::report(elastic.front() >= 1.8,
                      elastic_name + ": smallest order >= 1.8",
                      elastic.front());
-    const auto plastic = slowest_order(
-      "F=1e-3", "2", 0.125, 16, von_mises, smoothing, 4, family, support, metric);
+    const auto plastic = slowest_order("F=1e-3",
+                                       "2",
+                                       0.125,
+                                       16,
+                                       von_mises,
+                                       smoothing,
+                                       4,
+                                       family,
+                                       support,
+                                       metric);
     mpm_test::report(plastic.size() >= 2,
                      plastic_name + ": it yields",
                      plastic.size());

@@ -236,16 +236,16 @@ namespace mpm
       bool   has_face;
       double traction[dim];
     };
-    std::vector<PointLoads>                      loads; ///< of one cell
-    std::vector<char>                            has_body_force; ///< per body
-    CellStencils<dim>                            stencils; ///< of one cell
-    typename NodalLinearSystem<dim>::NodeGroups  stencil_groups; ///< per cell
+    std::vector<PointLoads>                     loads;          ///< of one cell
+    std::vector<char>                           has_body_force; ///< per body
+    CellStencils<dim>                           stencils;       ///< of one cell
+    typename NodalLinearSystem<dim>::NodeGroups stencil_groups; ///< per cell
     /// per particle of the cell: tau = j sigma of a filtered body, and
     /// its change for each column of the cell's matrix
     std::vector<dealii::SymmetricTensor<2, dim>> filtered_taus;
     std::vector<dealii::SymmetricTensor<2, dim>> filtered_changes;
     /// the filtered force of one body in one cell (add_filtered_force())
-    std::vector<double> filtered_force;
+    std::vector<double>                          filtered_force;
     dealii::FullMatrix<double>                   cell_matrix;
     dealii::Vector<double>                       cell_rhs;
     std::vector<dealii::types::global_dof_index> cell_dofs;

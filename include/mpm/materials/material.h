@@ -51,9 +51,8 @@ namespace mpm
       Tensor<2, 3>
       step_inverse() const
       {
-        return dealii::invert(
-          Tensor<2, 3>(dealii::unit_symmetric_tensor<3>()) +
-          dt * velocity_gradient);
+        return dealii::invert(Tensor<2, 3>(dealii::unit_symmetric_tensor<3>()) +
+                              dt * velocity_gradient);
       }
     };
 

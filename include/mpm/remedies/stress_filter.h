@@ -2,10 +2,10 @@
 
 #include <deal.II/particles/particle_handler.h>
 
-#include <mpm/remedies/assumed_stress.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/particles/body.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/assumed_stress.h>
 
 #include <memory>
 #include <vector>
