@@ -18,9 +18,11 @@ namespace
   const char *usage =
     "Usage: mpm-fe [options] FILE.prm\n"
     "\n"
-    "Finite-element reference solver (serial): linear elasticity with Q_p\n"
-    "or Taylor-Hood Q_p/Q_(p-1) elements, statics or modal analysis, run\n"
-    "on a list of global refinements (a refinement study).\n"
+    "Finite-element reference solver: linear elasticity with Q_p or\n"
+    "Taylor-Hood Q_p/Q_(p-1) elements, statics or modal analysis, run on a\n"
+    "list of global refinements (a refinement study). Direct solver on one\n"
+    "process, or (Linear solver/Method = AMG, statics) distributed over\n"
+    "the processes of mpirun with Trilinos and algebraic multigrid.\n"
     "\n"
     "Options:\n"
     "  -h, --help                 this text\n"
@@ -47,9 +49,24 @@ namespace
         throw mpm::InputError("Error in the parameter file '" + file +
                               "':\n    " + e.what());
       }
+    const unsigned int n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (n_ranks > 1 && parameters.solver.method ==
+                         mpm::fe_reference::LinearSolver::Method::direct)
+      throw mpm::InputError(
+        "Error in the parameter file '" + file +
+        "':\n    Linear solver/Method = direct runs on one process, not on " +
+        std::to_string(n_ranks) +
+        " (set Method = AMG to distribute the mesh, or run without mpirun)");
+    // one process prints
+    std::ostream  null_stream(nullptr);
+    std::ostream &log =
+      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
+        std::cout :
+        null_stream;
     try
       {
-        mpm::fe_reference::run_refinement_study(parameters, std::cout);
+        mpm::fe_reference::run_refinement_study(parameters, log);
       }
     catch (const mpm::InputError &e)
       {
@@ -73,15 +90,11 @@ namespace
 int
 main(int argc, char **argv)
 {
-  // deal.II's PETSc/Trilinos-enabled build wants MPI initialised; the
-  // solver itself is serial
+  // the direct solver is serial; Linear solver/Method = AMG distributes
+  // the mesh over the processes
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-    {
-      std::cerr << "mpm-fe: the reference solver is serial; run it without "
-                   "mpirun\n";
-      return 1;
-    }
+  const bool                               root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   std::string file;
   for (int i = 1; i < argc; ++i)
@@ -133,14 +146,17 @@ main(int argc, char **argv)
     }
   catch (const mpm::InputError &e)
     {
-      std::cerr << "mpm-fe: error: " << e.what() << "\nNothing was written."
-                << std::endl;
+      // every process meets the same error; one reports it
+      if (root)
+        std::cerr << "mpm-fe: error: " << e.what() << "\nNothing was written."
+                  << std::endl;
       return 1;
     }
   catch (const mpm::RuntimeError &e)
     {
-      std::cerr << "mpm-fe: the computation stopped " << e.what()
-                << "\nNothing was written." << std::endl;
+      if (root)
+        std::cerr << "mpm-fe: the computation stopped " << e.what()
+                  << "\nNothing was written." << std::endl;
       return 2;
     }
   catch (const std::exception &e)

@@ -310,6 +310,44 @@ namespace mpm
                            "...': the list must increase");
     }
 
+    // --------------------------------------------------------- LinearSolver
+    void
+    LinearSolver::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      prm.declare_entry(
+        "Method",
+        "direct",
+        Patterns::Selection("direct|AMG"),
+        "direct: UMFPACK on one process (statics and modal analysis). "
+        "AMG: the mesh distributed over the MPI processes (p4est), the "
+        "system in Trilinos matrices, solved by CG (displacement "
+        "formulation) or MINRES (mixed formulation) preconditioned by ML "
+        "algebraic multigrid with the rigid-body modes as near-null space; "
+        "statics only. Run it under mpirun for large 3D references.");
+      prm.declare_entry("Tolerance",
+                        "1e-10",
+                        Patterns::Double(1e-16, 1e-2),
+                        "AMG: the iteration stops when the residual is "
+                        "below this fraction of the load vector's norm.");
+      prm.declare_entry("Maximum iterations",
+                        "10000",
+                        Patterns::Integer(1),
+                        "AMG: a solve that needs more iterations stops the "
+                        "run with status 2.");
+      prm.leave_subsection();
+    }
+
+    void
+    LinearSolver::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      method    = prm.get("Method") == "AMG" ? Method::amg : Method::direct;
+      tolerance = prm.get_double("Tolerance");
+      max_iterations = prm.get_integer("Maximum iterations");
+      prm.leave_subsection();
+    }
+
     // ------------------------------------------------------------- Analysis
     template <int dim>
     void
@@ -438,6 +476,7 @@ namespace mpm
       prm.leave_subsection();
       BoundaryConditions::declare_parameters(prm, dim);
       Discretisation::declare_parameters(prm);
+      LinearSolver::declare_parameters(prm);
       Analysis<dim>::declare_parameters(prm);
       Output::declare_parameters(prm);
     }
@@ -467,6 +506,7 @@ namespace mpm
                                 discretisation.formulation ==
                                   Discretisation::Formulation::mixed);
       boundary.parse_parameters(prm);
+      solver.parse_parameters(prm);
       analysis.parse_parameters(prm);
       output.parse_parameters(prm);
 
@@ -497,6 +537,12 @@ namespace mpm
                          "Formulation = mixed is not implemented (use the "
                          "displacement formulation; the modes of nearly "
                          "incompressible solids are not a reference here)");
+      if (analysis.type == Analysis<dim>::Type::modal &&
+          solver.method == LinearSolver::Method::amg)
+        throw InputError("Analysis/Type = modal with Linear solver/Method = "
+                         "AMG is not implemented: the modal analysis "
+                         "inverts K - sigma M with UMFPACK on one process "
+                         "(set Method = direct)");
       if (analysis.type == Analysis<dim>::Type::modal &&
           (!boundary.traction_ids.empty() || !boundary.prescribed.empty()))
         throw InputError("Analysis/Type = modal: loads and prescribed "

@@ -1,5 +1,8 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/grid/tria.h>
 
+#include <mpm/fe_reference/distributed_elastic_system.h>
 #include <mpm/fe_reference/elastic_system.h>
 #include <mpm/fe_reference/modal_analysis.h>
 #include <mpm/fe_reference/reference_mesh.h>
@@ -84,6 +87,31 @@ namespace mpm
           out << std::setw(12) << std::setprecision(3) << row.change;
         out << std::defaultfloat << std::endl;
       }
+
+      /// The displacement at the points of interest, and the quantity.
+      template <int dim, typename System>
+      void
+      record_point_values(const System             &system,
+                          const AllParameters<dim> &parameters,
+                          StudyRow                 &row)
+      {
+        for (const auto &p : parameters.analysis.points)
+          {
+            const auto u = system.point_value(p);
+            for (unsigned int d = 0; d < dim; ++d)
+              row.values.push_back(u[d]);
+          }
+        row.quantity = row.values[parameters.analysis.component];
+      }
+
+      /// The quantity's relative change to the previous run.
+      void
+      set_change(const std::vector<StudyRow> &rows, StudyRow &row)
+      {
+        if (!rows.empty())
+          row.change = std::abs(row.quantity - rows.back().quantity) /
+                       std::max(std::abs(row.quantity), 1e-300);
+      }
     } // namespace
 
     template <int dim>
@@ -111,12 +139,54 @@ namespace mpm
           << "rel.change" << std::endl;
 
       std::vector<StudyRow> rows;
-      Triangulation<dim>    tria;
+      const bool            distributed =
+        parameters.solver.method == LinearSolver::Method::amg;
+      const MPI_Comm     comm = MPI_COMM_WORLD;
+      const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
+      Triangulation<dim> tria;
+      parallel::distributed::Triangulation<dim> distributed_tria(comm);
       // the finest system is kept for the vtu output
-      std::unique_ptr<ElasticSystem<dim>> system;
-      Modes                               modes;
+      std::unique_ptr<ElasticSystem<dim>>            system;
+      std::unique_ptr<DistributedElasticSystem<dim>> distributed_system;
+      Modes                                          modes;
       for (const unsigned int r : parameters.discretisation.refinements)
         {
+          if (distributed)
+            {
+              distributed_system.reset();
+              create_coarse_mesh(distributed_tria,
+                                 parameters.geometry,
+                                 input_folder);
+              distributed_tria.refine_global(r);
+              distributed_system =
+                std::make_unique<DistributedElasticSystem<dim>>(
+                  parameters, distributed_tria);
+              distributed_system->setup();
+
+              StudyRow row;
+              row.refinements       = r;
+              row.cells             = distributed_tria.n_global_active_cells();
+              row.dofs              = distributed_system->n_dofs();
+              const auto statistics = distributed_system->solve_static();
+              row.linear_iterations = statistics.iterations;
+              row.assembly_seconds  = statistics.assembly_seconds;
+              row.amg_setup_seconds = statistics.amg_setup_seconds;
+              row.solve_seconds     = statistics.solve_seconds;
+              record_point_values(*distributed_system, parameters, row);
+              set_change(rows, row);
+              print_row<dim>(log, row, rows.empty());
+              log << "        " << row.linear_iterations << " "
+                  << (distributed_system->mixed() ? "MINRES" : "CG")
+                  << " iterations with AMG on "
+                  << Utilities::MPI::n_mpi_processes(comm)
+                  << " processes; wall time: assembly " << std::fixed
+                  << std::setprecision(2) << row.assembly_seconds
+                  << " s, AMG set-up " << row.amg_setup_seconds << " s, solve "
+                  << row.solve_seconds << " s" << std::defaultfloat
+                  << std::endl;
+              rows.push_back(row);
+              continue;
+            }
           system.reset();
           create_coarse_mesh(tria, parameters.geometry, input_folder);
           tria.refine_global(r);
@@ -139,17 +209,9 @@ namespace mpm
           else
             {
               system->solve_static();
-              for (const auto &p : parameters.analysis.points)
-                {
-                  const auto u = system->point_value(p);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    row.values.push_back(u[d]);
-                }
-              row.quantity = row.values[parameters.analysis.component];
+              record_point_values(*system, parameters, row);
             }
-          if (!rows.empty())
-            row.change = std::abs(row.quantity - rows.back().quantity) /
-                         std::max(std::abs(row.quantity), 1e-300);
+          set_change(rows, row);
           print_row<dim>(log, row, rows.empty());
           rows.push_back(row);
         }
@@ -198,27 +260,42 @@ namespace mpm
 
       // everything succeeded: now write
       namespace fs = std::filesystem;
-      fs::create_directories(parameters.output.directory);
       const fs::path dir(parameters.output.directory);
-      std::ofstream  csv(dir / "refinement_study.csv");
-      csv << "refinements,cells,dofs";
-      for (const auto &name : value_names(parameters))
-        csv << "," << name;
-      csv << "," << (modal ? "T_1" : "quantity") << ",relative_change";
-      if (ref != 0)
-        csv << ",ratio_to_reference";
-      csv << "\n" << std::setprecision(12);
-      for (const auto &row : rows)
+      if (root)
         {
-          csv << row.refinements << "," << row.cells << "," << row.dofs;
-          for (const double v : row.values)
-            csv << "," << v;
-          csv << "," << row.quantity << "," << row.change;
+          fs::create_directories(parameters.output.directory);
+          std::ofstream csv(dir / "refinement_study.csv");
+          csv << "refinements,cells,dofs";
+          // a point's name holds commas: quoted, as CSV readers expect
+          for (const auto &name : value_names(parameters))
+            csv << ",\"" << name << "\"";
+          csv << "," << (modal ? "T_1" : "quantity") << ",relative_change";
           if (ref != 0)
-            csv << "," << row.quantity / ref;
-          csv << "\n";
+            csv << ",ratio_to_reference";
+          if (distributed)
+            csv << ",linear_iterations,assembly_seconds,amg_setup_seconds,"
+                   "solve_seconds";
+          csv << "\n" << std::setprecision(12);
+          for (const auto &row : rows)
+            {
+              csv << row.refinements << "," << row.cells << "," << row.dofs;
+              for (const double v : row.values)
+                csv << "," << v;
+              csv << "," << row.quantity << "," << row.change;
+              if (ref != 0)
+                csv << "," << row.quantity / ref;
+              if (distributed)
+                csv << "," << row.linear_iterations << ","
+                    << row.assembly_seconds << "," << row.amg_setup_seconds
+                    << "," << row.solve_seconds;
+              csv << "\n";
+            }
         }
-      if (parameters.output.write_vtu)
+      // the directory exists before any process writes into it
+      MPI_Barrier(comm);
+      if (parameters.output.write_vtu && distributed)
+        distributed_system->write_vtu((dir / "solution.vtu").string());
+      else if (parameters.output.write_vtu)
         {
           if (modal)
             {
@@ -236,7 +313,7 @@ namespace mpm
                               {&system->solution()},
                               {"displacement"});
         }
-      if (!parameters.output.test_summary.empty())
+      if (!parameters.output.test_summary.empty() && root)
         {
           std::ofstream out(parameters.output.test_summary);
           out << std::scientific << std::setprecision(5);

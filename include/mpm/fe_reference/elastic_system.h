@@ -10,7 +10,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <mpm/fe_reference/lame_moduli.h>
+#include <mpm/fe_reference/elastic_cell_assembler.h>
 #include <mpm/fe_reference/parameters.h>
 
 #include <memory>
@@ -72,7 +72,7 @@ namespace mpm
       bool
       mixed() const
       {
-        return is_mixed;
+        return element.mixed;
       }
 
       const dealii::DoFHandler<dim> &
@@ -118,16 +118,13 @@ namespace mpm
       void
       assemble(const bool with_mass);
 
-      const AllParameters<dim>              &parameters;
-      const bool                             is_mixed;
-      const LameModuli                       moduli;
-      std::unique_ptr<dealii::FESystem<dim>> fe;
-      dealii::MappingQ<dim>                  mapping;
-      dealii::DoFHandler<dim>                dofs;
-      dealii::AffineConstraints<double>      affine_constraints;
-      dealii::SparsityPattern                sparsity;
-      dealii::SparseMatrix<double>           stiffness, mass;
-      dealii::Vector<double>                 load, displacement;
+      const AllParameters<dim>         &parameters;
+      const ElasticElement<dim>         element;
+      dealii::DoFHandler<dim>           dofs;
+      dealii::AffineConstraints<double> affine_constraints;
+      dealii::SparsityPattern           sparsity;
+      dealii::SparseMatrix<double>      stiffness, mass;
+      dealii::Vector<double>            load, displacement;
     };
   } // namespace fe_reference
 } // namespace mpm

@@ -88,6 +88,24 @@ namespace mpm
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
+    /// How K u = f is solved.
+    struct LinearSolver
+    {
+      enum class Method
+      {
+        direct, ///< UMFPACK, serial
+        amg     ///< distributed Trilinos: AMG-preconditioned CG or MINRES
+      };
+      Method       method         = Method::direct;
+      double       tolerance      = 1e-10; ///< relative to |f|
+      unsigned int max_iterations = 10000;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
     /// What is computed and which number is the reference value.
     template <int dim>
     struct Analysis
@@ -134,6 +152,7 @@ namespace mpm
       Material                      material;
       BoundaryConditions            boundary;
       Discretisation                discretisation;
+      LinearSolver                  solver;
       Analysis<dim>                 analysis;
       Output                        output;
 
