@@ -86,23 +86,23 @@ namespace mpm
     }
 
     template <int dim>
-    bool
-    ElasticSystem<dim>::leaves_rigid_body_motion() const
+    unsigned int
+    ElasticSystem<dim>::n_rigid_body_motions() const
     {
       if (has_dirichlet_boundary())
-        return false;
+        return 0;
       // the constraints (slip, hanging nodes) are homogeneous here
-      return constraints_admit_rigid_motion(element.mapping,
-                                            dofs,
-                                            affine_constraints,
-                                            Vector<double>(dofs.n_dofs()));
+      return n_admissible_rigid_motions(element.mapping,
+                                        dofs,
+                                        affine_constraints,
+                                        Vector<double>(dofs.n_dofs()));
     }
 
     template <int dim>
     void
     ElasticSystem<dim>::solve_static()
     {
-      if (leaves_rigid_body_motion())
+      if (n_rigid_body_motions() > 0)
         throw InputError(free_body_message);
       assemble(false);
       SparseDirectUMFPACK direct;

@@ -9,6 +9,7 @@
 #include <mpm/fe_reference/refinement_study.h>
 #include <mpm/utilities/input_error.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -266,9 +267,13 @@ namespace mpm
           fs::create_directories(parameters.output.directory);
           std::ofstream csv(dir / "refinement_study.csv");
           csv << "refinements,cells,dofs";
-          // a point's name holds commas: quoted, as CSV readers expect
-          for (const auto &name : value_names(parameters))
-            csv << ",\"" << name << "\"";
+          // a point's coordinates are separated by spaces here, not by
+          // the field separator: u_x(48 60)
+          for (auto name : value_names(parameters))
+            {
+              std::replace(name.begin(), name.end(), ',', ' ');
+              csv << "," << name;
+            }
           csv << "," << (modal ? "T_1" : "quantity") << ",relative_change";
           if (ref != 0)
             csv << ",ratio_to_reference";

@@ -109,10 +109,11 @@ namespace mpm
       bool
       has_dirichlet_boundary() const;
 
-      /// Whether a rigid-body motion satisfies every constraint (then K is
-      /// singular and statics has no unique solution).
-      bool
-      leaves_rigid_body_motion() const;
+      /// How many independent rigid-body motions satisfy every constraint:
+      /// K's kernel (statics needs none; modal analysis skips as many
+      /// near-zero modes). Zero with a clamped or prescribed boundary.
+      unsigned int
+      n_rigid_body_motions() const;
 
     private:
       void

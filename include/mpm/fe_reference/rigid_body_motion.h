@@ -55,16 +55,16 @@ namespace mpm
       "hold every translation and rotation)";
 
     /**
-     * Whether a combination of rigid-body motions satisfies every
-     * (homogeneous) constraint: then K is singular. A motion r is
-     * admissible if distribute() leaves it unchanged; the admissible
-     * combinations are the null space of the violations V = [r_k -
-     * distribute(r_k)], tested through the Gram matrix V^T V. @p prototype
-     * gives the vector layout (serial, or distributed without ghosts).
+     * How many independent rigid-body motions satisfy every (homogeneous)
+     * constraint: the dimension of K's kernel. A motion r is admissible if
+     * distribute() leaves it unchanged; the admissible combinations are the
+     * null space of the violations V = [r_k - distribute(r_k)], counted
+     * through the eigenvalues of the Gram matrix V^T V. @p prototype gives
+     * the vector layout (serial, or distributed without ghosts).
      */
     template <int dim, typename VectorType>
-    bool
-    constraints_admit_rigid_motion(
+    unsigned int
+    n_admissible_rigid_motions(
       const dealii::Mapping<dim>              &mapping,
       const dealii::DoFHandler<dim>           &dofs,
       const dealii::AffineConstraints<double> &constraints,
@@ -91,10 +91,25 @@ namespace mpm
         for (unsigned int l = 0; l < n_rigid; ++l)
           gram(k, l) = violation[k] * violation[l];
       gram.compute_eigenvalues();
-      double smallest = std::numeric_limits<double>::max();
+      unsigned int n_admissible = 0;
       for (unsigned int k = 0; k < n_rigid; ++k)
-        smallest = std::min(smallest, std::abs(gram.eigenvalue(k)));
-      return smallest < 1e-12;
+        if (std::abs(gram.eigenvalue(k)) < 1e-12)
+          ++n_admissible;
+      return n_admissible;
+    }
+
+    /// Whether some rigid-body motion satisfies every constraint (then K
+    /// is singular and statics has no unique solution).
+    template <int dim, typename VectorType>
+    bool
+    constraints_admit_rigid_motion(
+      const dealii::Mapping<dim>              &mapping,
+      const dealii::DoFHandler<dim>           &dofs,
+      const dealii::AffineConstraints<double> &constraints,
+      const VectorType                        &prototype)
+    {
+      return n_admissible_rigid_motions(mapping, dofs, constraints, prototype) >
+             0;
     }
   } // namespace fe_reference
 } // namespace mpm
