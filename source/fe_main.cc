@@ -49,6 +49,14 @@ namespace
         throw mpm::InputError("Error in the parameter file '" + file +
                               "':\n    " + e.what());
       }
+    catch (const dealii::ExceptionBase &e)
+      {
+        // a value the pattern accepts but the conversion cannot represent
+        throw mpm::InputError("Error in the parameter file '" + file +
+                              "':\n    " + mpm::clean_dealii_message(e.what()) +
+                              " (a number outside the range of double "
+                              "precision, about 2.2e-308 to 1.8e308?)");
+      }
     const unsigned int n_ranks =
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     if (n_ranks > 1 && parameters.solver.method ==

@@ -172,6 +172,18 @@ namespace mpm
         }
       if (step_control == StepControl::fixed && !(time_step > 0))
         throw InputError("Time stepping/Time step must be positive");
+      // beyond 2^53 steps t + dt = t before the end: the run would never end
+      if (step_control == StepControl::fixed &&
+          end_time / time_step > max_steps_to_end)
+        {
+          std::ostringstream msg;
+          msg << "Time stepping/Time step = " << time_step << " would need "
+              << end_time / time_step
+              << " steps to reach End time = " << end_time
+              << " (more than 2^53: the time would stop advancing in double "
+                 "precision); choose a larger step or a shorter run";
+          throw InputError(msg.str());
+        }
       if (step_control == StepControl::cfl && !(cfl_number > 0))
         throw InputError("Time stepping/CFL number must be positive");
       if (apic && flip_fraction != 1.)
@@ -541,6 +553,11 @@ namespace mpm
                       const unsigned int       depth)
       {
         namespace fs = std::filesystem;
+        // a directory opens like an empty file: the defaults would run
+        std::error_code error;
+        if (fs::is_directory(file_name, error))
+          throw InputError("The parameter file '" + file_name +
+                           "' is a directory, not a file");
         std::ifstream in(file_name);
         if (!in)
           throw InputError("Cannot open the parameter file '" + file_name +
@@ -572,6 +589,12 @@ namespace mpm
                                    file_name + "': the included file '" + name +
                                    "' does not exist (looked for " +
                                    path.string() + ")");
+                std::error_code error;
+                if (fs::is_directory(path, error))
+                  throw InputError("line " + std::to_string(n) + " of '" +
+                                   file_name + "': the included file '" + name +
+                                   "' is a directory (" + path.string() +
+                                   "), not a file");
                 expand_includes(path.string(), out, depth + 1);
               }
             else

@@ -1,10 +1,12 @@
 // The Simulator's wiring: set-up from the parameters or a checkpoint, the
 // time loop, and the per-step bookkeeping around the integrator's step.
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/simulator.h>
+#include <mpm/solver/stress_update.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/wall_clock.h>
 
@@ -125,6 +127,7 @@ namespace mpm
         double dt = integrator->next_step_length();
         if (state.current_time + dt > end - tiny)
           dt = end - state.current_time;
+        check_time_step(dt);
         do_time_step(dt);
         if (output_due())
           untimed([&]() { write_output(); });
@@ -193,6 +196,53 @@ namespace mpm
           << "): " << msg;
         throw RuntimeError(s.str());
       }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::check_time_step(const double dt)
+  {
+    using TimeStepping   = Parameters::TimeStepping;
+    const double to_end  = params.time.end_time - state.current_time;
+    const bool   advance = dt > 0 && std::isfinite(dt) &&
+                         state.current_time + dt > state.current_time;
+    if (advance && to_end / dt <= TimeStepping::max_steps_to_end)
+      return;
+    // The step cannot advance the run: say why, and which particle has the
+    // smallest stability limit.
+    std::ostringstream s;
+    s << "at step " << state.current_step << " (t = " << state.current_time
+      << "): the time step " << dt;
+    if (!(dt > 0) || !std::isfinite(dt))
+      s << " is not a positive number, so the run cannot advance";
+    else if (!advance)
+      s << " does not change the time in double precision (t + dt = t), so "
+           "the run cannot advance";
+    else
+      s << " would need " << to_end / dt
+        << " steps (more than 2^53), so the run cannot reach End time";
+    s << limiting_particle_text();
+    throw RuntimeError(s.str());
+  }
+
+  template <int dim>
+  std::string
+  Simulator<dim>::limiting_particle_text()
+  {
+    // all ranks: the smallest h/(c + |v|) wins
+    auto [limit, which] =
+      limiting_particle(state.background, state.particle_handler, state.bodies);
+    struct
+    {
+      double value;
+      int    rank;
+    } local{limit, int(Utilities::MPI::this_mpi_process(comm))}, global;
+    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
+    which = Utilities::MPI::broadcast(comm, which, global.rank);
+    return which.empty() ? std::string() :
+                           ". The smallest stability limit h/(c + |v|) is "
+                           "that of " +
+                             which;
   }
 
   template <int dim>

@@ -200,6 +200,21 @@ namespace mpm
           s << " b " << e;
         summary_rows.push_back(s.str());
       }
+
+    // The row just written shows it; the run stops here rather than going
+    // on with an overflowed state.
+    const bool kinetic_finite = std::isfinite(stats.kinetic_energy);
+    if (!kinetic_finite || !std::isfinite(stats.strain_energy))
+      {
+        std::ostringstream s;
+        s << "at step " << state.current_step << " (t = " << state.current_time
+          << "): the total " << (kinetic_finite ? "strain" : "kinetic")
+          << " energy is "
+          << (kinetic_finite ? stats.strain_energy : stats.kinetic_energy)
+          << ", so a velocity or a stress has overflowed"
+          << limiting_particle_text();
+        throw RuntimeError(s.str());
+      }
   }
 
   template <int dim>

@@ -278,6 +278,49 @@ namespace mpm
     return dt;
   }
 
+  template <int dim>
+  std::pair<double, std::string>
+  limiting_particle(const BackgroundGrid<dim>       &grid,
+                    Particles::ParticleHandler<dim> &particles,
+                    const std::vector<Body<dim>>    &bodies)
+  {
+    using L              = ParticleLayout<dim>;
+    double      smallest = std::numeric_limits<double>::infinity();
+    std::string which;
+    bool        found_bad = false; // the first bad particle is reported
+    for_each_cell_with_particles(
+      grid, particles, [&](const auto &cell, const auto &pic) {
+        const double h = grid.cell_height(cell);
+        for (const auto &p : pic)
+          {
+            if (found_bad)
+              return;
+            const double *prop = p.get_properties().data();
+            // |v| without squaring (1e200 stays finite)
+            double speed = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              speed = std::hypot(speed, prop[L::velocity + d]);
+            const unsigned int body = static_cast<unsigned int>(prop[L::body]);
+            const double       c    = bodies[body].material->wave_speed(
+              embed<dim>(load_matrix<dim>(prop + L::F), 1.));
+            const double limit = h / (c + speed);
+            const bool   bad   = !(limit > 0) || !std::isfinite(limit);
+            if (bad || limit < smallest)
+              {
+                smallest = bad ? 0. : limit;
+                std::ostringstream s;
+                s << "particle " << p.get_id() << " of body " << body << " at ("
+                  << p.get_location() << "): h = " << h
+                  << ", wave speed c = " << c << ", |v| = " << speed
+                  << ", h/(c + |v|) = " << limit;
+                which     = s.str();
+                found_bad = bad;
+              }
+          }
+      });
+    return {smallest, which};
+  }
+
 #define MPM_INSTANTIATE(d)                                             \
   template StressUpdateResult update_stress<d>(                        \
     const BackgroundGrid<d> &,                                         \
@@ -287,6 +330,10 @@ namespace mpm
     double,                                                            \
     NodalVector *,                                                     \
     const shape_functions::DomainShapeFunctions<d> *);                 \
+  template std::pair<double, std::string> limiting_particle<d>(        \
+    const BackgroundGrid<d> &,                                         \
+    Particles::ParticleHandler<d> &,                                   \
+    const std::vector<Body<d>> &);                                     \
   template double stable_time_step<d>(const BackgroundGrid<d> &,       \
                                       Particles::ParticleHandler<d> &, \
                                       const std::vector<Body<d>> &);

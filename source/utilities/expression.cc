@@ -147,6 +147,14 @@ namespace mpm
         if (kv.size() != 2 || kv[0].empty())
           throw InputError(entry + ": '" + item +
                            "' is not of the form name=value");
+        // the expressions' variables: a constant of that name would
+        // silently replace the coordinate or the time everywhere
+        if (kv[0] == "x" || kv[0] == "y" || kv[0] == "z" || kv[0] == "t")
+          throw InputError(entry + ": '" + kv[0] +
+                           "' is a variable of the expressions (the "
+                           "coordinates x, y, z and the time t); a constant "
+                           "of that name would replace it in every "
+                           "expression. Choose another name");
         try
           {
             out[kv[0]] = dealii::Utilities::string_to_double(kv[1]);

@@ -15,6 +15,8 @@ if [ -f "$case" ]; then
   expect=$(sed -n 's/^# EXPECT: *//p' "$case" | head -1)
   before_run=$(sed -n 's/^# BEFORE: *//p' "$case" | head -1)
   [ -n "$(sed -n 's/^# COPY-TO-RESULTS//p' "$case")" ] && keep=1 || keep=0
+elif [ -d "$case" ]; then
+  status=1 expect="is a directory, not a file" keep=0 before_run=
 else
   status=1 expect="Cannot open the parameter file" keep=0 before_run=
 fi

@@ -27,6 +27,11 @@ namespace mpm
     /// Time integration and the choice of the update scheme.
     struct TimeStepping
     {
+      /// More steps than this to the end (2^53): t + dt = t in double
+      /// precision before the end; refused for a fixed step, stops a run
+      /// whose adaptive step has become that small.
+      static constexpr double max_steps_to_end = 9007199254740992.;
+
       enum class Scheme
       {
         usf,

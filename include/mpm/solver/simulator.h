@@ -64,6 +64,17 @@ namespace mpm
     {
       return state.current_step;
     }
+    /// A step that is not a positive number, or does not change the
+    /// time, stops the run (RuntimeError naming the particle with the
+    /// smallest stability limit). Collective.
+    void
+    check_time_step(const double dt);
+
+    /// ". The smallest stability limit h/(c + |v|) is that of particle
+    /// ..." (the particle over all ranks), or empty. Collective.
+    std::string
+    limiting_particle_text();
+
     /// Stable step of the current state (collective min).
     double
     stable_time_step();

@@ -56,4 +56,17 @@ namespace mpm
   stable_time_step(const BackgroundGrid<dim>               &grid,
                    dealii::Particles::ParticleHandler<dim> &particles,
                    const std::vector<Body<dim>>            &bodies);
+
+  /**
+   * The particle of this rank with the smallest stability limit
+   * h/(c + |v|) (or the first whose limit is not a positive number), as
+   * "particle ID of body B at (x): h = .., wave speed c = .., |v| = ..";
+   * empty without particles. For the message of a step that cannot
+   * advance; not for the hot loop.
+   */
+  template <int dim>
+  std::pair<double, std::string>
+  limiting_particle(const BackgroundGrid<dim>               &grid,
+                    dealii::Particles::ParticleHandler<dim> &particles,
+                    const std::vector<Body<dim>>            &bodies);
 } // namespace mpm
