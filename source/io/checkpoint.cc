@@ -4,6 +4,7 @@
 #include <mpm/io/atomic_files.h>
 #include <mpm/io/checkpoint.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +12,8 @@
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+
+#include <boost/crc.hpp>
 
 namespace mpm
 {
@@ -213,10 +216,130 @@ namespace mpm
       return folder;
     }
 
+    namespace
+    {
+      /// Size and CRC-32 of a file, read in blocks.
+      std::pair<unsigned long long, std::uint32_t>
+      size_and_crc(const std::string &file_name)
+      {
+        std::ifstream in(file_name, std::ios::binary);
+        if (!in)
+          throw std::runtime_error("cannot read the file '" + file_name + "'");
+        boost::crc_32_type crc;
+        std::vector<char>  block(1 << 20);
+        unsigned long long size = 0;
+        while (in)
+          {
+            in.read(block.data(), block.size());
+            crc.process_bytes(block.data(), in.gcount());
+            size += in.gcount();
+          }
+        return {size, crc.checksum()};
+      }
+
+      const char *manifest_header = "mpm checkpoint manifest 1";
+    } // namespace
+
+    void
+    write_manifest(const std::string &folder)
+    {
+      std::vector<std::string> files;
+      for (const auto &entry : fs::recursive_directory_iterator(folder))
+        if (entry.is_regular_file() &&
+            entry.path().filename() != "manifest.txt")
+          files.push_back(fs::relative(entry.path(), folder).string());
+      std::sort(files.begin(), files.end());
+      std::ostringstream text;
+      text << manifest_header << '\n';
+      for (const auto &f : files)
+        {
+          const auto [size, crc] = size_and_crc(folder + "/" + f);
+          text << std::hex << std::setw(8) << std::setfill('0') << crc
+               << std::dec << ' ' << size << ' ' << f << '\n';
+        }
+      text << "end\n";
+      write_file_atomically(folder + "/manifest.txt", text.str());
+    }
+
+    std::string
+    verify(const std::string &folder)
+    {
+      if (!fs::is_directory(folder))
+        return "the checkpoint folder '" + folder +
+               "' (named by latest.txt) does not exist";
+      const std::string manifest = folder + "/manifest.txt";
+      std::ifstream     in(manifest);
+      std::string       line;
+      if (!in || !std::getline(in, line) || line != manifest_header)
+        return "the checkpoint '" + folder +
+               "' has no readable manifest.txt (it is incomplete or damaged)";
+      bool complete = false;
+      while (std::getline(in, line))
+        {
+          if (line == "end")
+            {
+              complete = true;
+              break;
+            }
+          std::istringstream row(line);
+          std::string        crc_text, name;
+          unsigned long long size = 0;
+          if (!(row >> crc_text >> size) || !std::getline(row >> std::ws, name))
+            return "the checkpoint file '" + manifest + "' is damaged (line '" +
+                   line + "')";
+          const std::string file = folder + "/" + name;
+          std::error_code   error;
+          if (!fs::is_regular_file(file, error))
+            return "the checkpoint file '" + file + "' is missing";
+          const auto [actual_size, crc] = size_and_crc(file);
+          std::ostringstream actual_crc;
+          actual_crc << std::hex << std::setw(8) << std::setfill('0') << crc;
+          if (actual_size != size)
+            return "the checkpoint file '" + file +
+                   "' is damaged: " + std::to_string(actual_size) + " bytes, " +
+                   std::to_string(size) + " when it was written";
+          if (actual_crc.str() != crc_text)
+            return "the checkpoint file '" + file +
+                   "' is damaged: its CRC-32 is " + actual_crc.str() + ", " +
+                   crc_text + " when it was written";
+        }
+      if (!complete)
+        return "the checkpoint file '" + manifest + "' is incomplete";
+      return "";
+    }
+
+    std::vector<std::string>
+    earlier_checkpoints(const std::string &output_directory)
+    {
+      const std::string        dir = root(output_directory);
+      const std::string        now = latest(output_directory);
+      std::vector<std::string> out;
+      std::error_code          error;
+      if (!fs::is_directory(dir, error))
+        return out;
+      for (const auto &entry : fs::directory_iterator(dir))
+        if (entry.is_directory() && entry.path().string() != now &&
+            entry.path().filename().string().rfind("step-", 0) == 0)
+          out.push_back(entry.path().string());
+      // step-NNNNNNNN sorts by step; the newest first
+      std::sort(out.rbegin(), out.rend());
+      return out;
+    }
+
+    void
+    set_latest(const std::string &output_directory, const std::string &folder)
+    {
+      write_file_atomically(root(output_directory) + "/latest.txt",
+                            fs::path(folder).filename().string() + "\n",
+                            true);
+    }
+
     void
     commit(const std::string &output_directory, const std::string &folder)
     {
       const std::string dir = root(output_directory);
+      write_manifest(folder);
+      const std::string previous = latest(output_directory);
       // Every file of the new checkpoint reaches the storage device before
       // latest.txt names it, so a crash of the machine (not only of the
       // process) leaves either the old or the complete new checkpoint.
@@ -226,12 +349,11 @@ namespace mpm
       flush_to_storage(folder);
       flush_to_storage(dir);
       // The commit point: rename() replaces latest.txt atomically.
-      write_file_atomically(dir + "/latest.txt",
-                            fs::path(folder).filename().string() + "\n",
-                            true);
+      set_latest(output_directory, folder);
       for (const auto &entry : fs::directory_iterator(dir))
         if (entry.is_directory() &&
-            entry.path().filename() != fs::path(folder).filename())
+            entry.path().filename() != fs::path(folder).filename() &&
+            entry.path().string() != previous)
           fs::remove_all(entry.path());
     }
 

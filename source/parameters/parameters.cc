@@ -483,7 +483,7 @@ namespace mpm
                         "Write a checkpoint after every step whose number is "
                         "a multiple of this (0: not by step count). The "
                         "checkpoint is kept in Output/Directory/checkpoint/; "
-                        "only the latest complete one is kept.");
+                        "the two latest complete ones are kept.");
       prm.declare_entry("Wall time between checkpoints",
                         "0",
                         Patterns::Double(0),
@@ -502,6 +502,15 @@ namespace mpm
                         "that differ from the checkpoint's, except Output, "
                         "Checkpointing, Time stepping/End time and Maximum "
                         "number of steps.");
+      prm.declare_entry("Damaged checkpoint",
+                        "stop",
+                        Patterns::Selection("stop|use previous"),
+                        "A restart first checks every file of the latest "
+                        "checkpoint against the size and CRC-32 written "
+                        "with it. stop: a missing or damaged file is an "
+                        "input error naming it; use previous: the restart "
+                        "continues from the previous complete checkpoint "
+                        "instead (the two latest are kept), and says so.");
       prm.leave_subsection();
     }
 
@@ -509,12 +518,13 @@ namespace mpm
     Checkpointing::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Checkpointing");
-      steps_between       = prm.get_integer("Steps between checkpoints");
-      wall_seconds        = prm.get_double("Wall time between checkpoints");
-      const std::string r = prm.get("Resume computation");
-      resume              = r == "true" ? Resume::yes :
-                            r == "auto" ? Resume::automatic :
-                                          Resume::no;
+      steps_between         = prm.get_integer("Steps between checkpoints");
+      wall_seconds          = prm.get_double("Wall time between checkpoints");
+      const std::string r   = prm.get("Resume computation");
+      resume                = r == "true" ? Resume::yes :
+                              r == "auto" ? Resume::automatic :
+                                            Resume::no;
+      fall_back_to_previous = prm.get("Damaged checkpoint") == "use previous";
       prm.leave_subsection();
     }
 

@@ -127,9 +127,53 @@ namespace mpm
     const auto &c = params.checkpointing;
     if (c.resume == Resume::no)
       return "";
-    std::string folder;
+    // Every file of the checkpoint is checked (size, CRC-32) before
+    // anything is loaded: a damaged file would otherwise abort p4est or
+    // resume silently from a wrong state.
+    std::string folder, problem, notice;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      folder = checkpoint::latest(params.output.directory);
+      try
+        {
+          const auto &dir = params.output.directory;
+          folder          = checkpoint::latest(dir);
+          if (!folder.empty())
+            problem = checkpoint::verify(folder);
+          if (!problem.empty())
+            {
+              std::string usable;
+              for (const auto &earlier : checkpoint::earlier_checkpoints(dir))
+                if (checkpoint::verify(earlier).empty())
+                  {
+                    usable = earlier;
+                    break;
+                  }
+              if (c.fall_back_to_previous && !usable.empty())
+                {
+                  notice = "  the latest checkpoint is damaged (" + problem +
+                           "); resuming from the previous one, " + usable +
+                           "\n";
+                  folder = usable;
+                  problem.clear();
+                  // the damaged folder goes at the next commit, as any
+                  // other but the previous latest
+                  checkpoint::set_latest(dir, usable);
+                }
+              else
+                problem +=
+                  usable.empty() ?
+                    " (and there is no earlier complete checkpoint)" :
+                    " (set Checkpointing/Damaged checkpoint = use previous "
+                    "to resume from the previous complete checkpoint, " +
+                      usable + ")";
+            }
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
+    throw_if_any<InputError>(
+      comm, "Checkpointing/Resume computation: ", problem);
+    pcout << notice;
     folder = Utilities::MPI::broadcast(comm, folder, 0);
     if (folder.empty() && c.resume == Resume::yes)
       throw InputError(

@@ -15,9 +15,12 @@
  * particle table in 1D), the solver state (state.txt), the parameters of
  * the run (parameters.prm) and a copy of the statistics file. The file
  * checkpoint/latest.txt names the latest complete folder; it is replaced
- * by a rename only after every file of a new folder is written, and older
- * folders are removed only after that, so a run killed at any moment
- * leaves a usable checkpoint behind (the previous one).
+ * by a rename only after every file of a new folder is written and listed
+ * with its size and CRC-32 in the folder's manifest.txt; all but the
+ * previous latest folder are removed only after that, so a run killed at
+ * any moment leaves a usable checkpoint behind, and a restart verifies
+ * every file before it loads anything (and may fall back to the previous
+ * checkpoint when the latest is damaged).
  */
 namespace mpm
 {
@@ -74,10 +77,32 @@ namespace mpm
     std::string
     begin(const std::string &output_directory, const unsigned int step);
 
-    /// Rank 0, after every file of @p folder is written: make it the
-    /// latest (atomic rename of latest.txt) and remove every other folder.
+    /// Rank 0, after every file of @p folder is written: write its
+    /// manifest, make it the latest (atomic rename of latest.txt) and
+    /// remove every other folder but the previous latest (the two latest
+    /// complete checkpoints are kept).
     void
     commit(const std::string &output_directory, const std::string &folder);
+
+    /// Rank 0: latest.txt names @p folder (an atomic rename).
+    void
+    set_latest(const std::string &output_directory, const std::string &folder);
+
+    /// Rank 0: @p folder/manifest.txt, the size and CRC-32 of every other
+    /// file of the folder.
+    void
+    write_manifest(const std::string &folder);
+
+    /// Rank 0: "" if @p folder exists, has its manifest, and every file
+    /// the manifest lists has its size and CRC-32; else a message naming
+    /// the first damaged or missing file. Nothing else is read.
+    std::string
+    verify(const std::string &folder);
+
+    /// Rank 0: the checkpoint folders other than the latest, the newest
+    /// (highest step) first.
+    std::vector<std::string>
+    earlier_checkpoints(const std::string &output_directory);
 
     /// Total size in bytes of the files in @p folder.
     unsigned long long

@@ -156,6 +156,9 @@ namespace mpm
       unsigned int steps_between = 0; ///< 0: not by step count
       double       wall_seconds  = 0; ///< 0: not by wall-clock time
       Resume       resume        = Resume::no;
+      /// A damaged latest checkpoint: resume from the previous one (else
+      /// refuse)
+      bool fall_back_to_previous = false;
 
       bool
       enabled() const
