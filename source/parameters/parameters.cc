@@ -580,6 +580,11 @@ namespace mpm
         while (std::getline(in, text))
           {
             ++n;
+            // a NUL would cut every message that quotes the line
+            if (text.find('\0') != std::string::npos)
+              throw InputError("line " + std::to_string(n) + " of '" +
+                               file_name +
+                               "' contains a NUL byte (a binary file?)");
             const auto first = text.find_first_not_of(" \t");
             if (first != std::string::npos &&
                 (text.compare(first, 8, "include ") == 0 ||

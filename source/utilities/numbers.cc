@@ -52,7 +52,16 @@ namespace mpm
         std::size_t  used  = 0;
         const double value = std::stod(text, &used);
         if (text.find_first_not_of(" \t", used) == std::string::npos)
-          return value;
+          {
+            // stod reads "inf" and "nan"
+            if (!std::isfinite(value))
+              throw InputError(entry + " = '" + text + "' is not finite");
+            return value;
+          }
+      }
+    catch (const InputError &)
+      {
+        throw;
       }
     catch (...)
       {}
