@@ -42,20 +42,13 @@ namespace
     parameters.file_name = file;
     try
       {
-        parameters.parse_parameters(prm);
+        mpm::parse_with_range_check(
+          [&]() { parameters.parse_parameters(prm); });
       }
     catch (const mpm::InputError &e)
       {
         throw mpm::InputError("Error in the parameter file '" + file +
                               "':\n    " + e.what());
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        // a value the pattern accepts but the conversion cannot represent
-        throw mpm::InputError("Error in the parameter file '" + file +
-                              "':\n    " + mpm::clean_dealii_message(e.what()) +
-                              " (a number outside the range of double "
-                              "precision, about 2.2e-308 to 1.8e308?)");
       }
     const unsigned int n_ranks =
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);

@@ -51,18 +51,7 @@ namespace
       }
     mpm::Parameters::AllParameters<dim> parameters;
     parameters.file_name = file;
-    try
-      {
-        parameters.parse_parameters(prm);
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        // a value the pattern accepts but the conversion cannot represent
-        // (1e-320 underflows to a denormal, 1e400 overflows)
-        throw mpm::InputError(mpm::clean_dealii_message(e.what()) +
-                              " (a number outside the range of double "
-                              "precision, about 2.2e-308 to 1.8e308?)");
-      }
+    mpm::parse_with_range_check([&]() { parameters.parse_parameters(prm); });
     // Errors leave the simulator's scope normally (its timer would complain
     // about being destroyed during stack unwinding) and are re-thrown.
     std::exception_ptr error;

@@ -16,12 +16,12 @@
 #include <mpm/fe_reference/distributed_elastic_system.h>
 #include <mpm/fe_reference/elastic_cell_assembler.h>
 #include <mpm/fe_reference/rigid_body_motion.h>
+#include <mpm/utilities/elasticity_amg.h>
 #include <mpm/utilities/input_error.h>
 
 #include <sstream>
 
 #include <Epetra_MultiVector.h>
-#include <Teuchos_ParameterList.hpp>
 
 namespace mpm
 {
@@ -32,10 +32,8 @@ namespace mpm
     namespace
     {
       /**
-       * ML for the displacement block. Its near-null space is the
-       * rigid-body modes evaluated at the dofs' support points (the
-       * aggregates then carry the elastic energy's kernel, and the
-       * iteration count stays nearly constant under refinement).
+       * ML for the displacement block, with the rigid-body modes at the
+       * displacement dofs' support points as near-null space.
        */
       template <int dim>
       void
@@ -46,10 +44,9 @@ namespace mpm
                      const IndexSet                       &owned_u,
                      const MPI_Comm                        comm)
       {
-        const auto        &fe      = dofs.get_fe();
-        const unsigned int n_modes = dim == 2 ? 3 : 6;
-        const auto        &map     = A.trilinos_matrix().OperatorDomainMap();
-        Epetra_MultiVector modes(map, n_modes);
+        const auto        &fe = dofs.get_fe();
+        Epetra_MultiVector modes(A.trilinos_matrix().OperatorDomainMap(),
+                                 n_rigid_body_modes<dim>);
 
         // support point and component of every owned displacement dof
         std::vector<bool>                    done(owned_u.n_elements(), false);
@@ -73,44 +70,25 @@ namespace mpm
                   interleaved        = interleaved && (k % dim == c);
                   const Point<dim> x = mapping.transform_unit_to_real_cell(
                     cell, fe.unit_support_point(i));
-                  modes[c][k] = 1.;
-                  if constexpr (dim == 2)
-                    modes[2][k] = c == 0 ? -x[1] : x[0];
-                  if constexpr (dim == 3)
-                    {
-                      // rotations about x, y, z: e_a x x
-                      modes[3][k] = c == 1 ? -x[2] : c == 2 ? x[1] : 0.;
-                      modes[4][k] = c == 0 ? x[2] : c == 2 ? -x[0] : 0.;
-                      modes[5][k] = c == 0 ? -x[1] : c == 1 ? x[0] : 0.;
-                    }
+                  for (unsigned int m = 0; m < n_rigid_body_modes<dim>; ++m)
+                    modes[m][k] = rigid_body_mode<dim>(m, c, x);
                 }
             }
         interleaved = Utilities::MPI::min(interleaved ? 1 : 0, comm) == 1;
-
-        TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        data.elliptic              = true;
-        data.higher_order_elements = fe.degree > 1;
-        data.smoother_sweeps       = 2;
-        data.aggregation_threshold = 1e-4;
-        Teuchos::ParameterList              ml;
-        std::unique_ptr<Epetra_MultiVector> unused;
-        data.set_parameters(ml, unused, A);
-        ml.set("PDE equations", interleaved ? int(dim) : 1);
-        ml.set("null space: type", "pre-computed");
-        ml.set("null space: dimension", int(n_modes));
-        ml.set("null space: vectors", modes.Values());
-        amg.initialize(A, ml);
+        initialize_elasticity_amg(
+          amg, A, modes, interleaved ? dim : 1, fe.degree > 1);
       }
 
-      /// diag(AMG(A), S^-1) with S a diagonal pressure matrix.
+      /// diag(AMG(A), S^-1) with S a diagonal pressure matrix, given by
+      /// its inverse.
       class BlockDiagonalPreconditioner
       {
       public:
         BlockDiagonalPreconditioner(
           const TrilinosWrappers::PreconditionAMG &amg,
-          const TrilinosWrappers::MPI::Vector     &schur_diagonal)
+          const TrilinosWrappers::MPI::Vector     &inverse_schur_diagonal)
           : amg(amg)
-          , schur_diagonal(schur_diagonal)
+          , inverse_schur_diagonal(inverse_schur_diagonal)
         {}
 
         void
@@ -119,26 +97,12 @@ namespace mpm
         {
           amg.vmult(dst.block(0), src.block(0));
           dst.block(1) = src.block(1);
-          dst.block(1).scale(inverse());
+          dst.block(1).scale(inverse_schur_diagonal);
         }
 
       private:
-        const TrilinosWrappers::MPI::Vector &
-        inverse() const
-        {
-          if (inverse_diagonal.size() == 0)
-            {
-              inverse_diagonal = schur_diagonal;
-              for (const auto i : inverse_diagonal.locally_owned_elements())
-                inverse_diagonal[i] = 1. / schur_diagonal[i];
-              inverse_diagonal.compress(VectorOperation::insert);
-            }
-          return inverse_diagonal;
-        }
-
         const TrilinosWrappers::PreconditionAMG &amg;
-        const TrilinosWrappers::MPI::Vector     &schur_diagonal;
-        mutable TrilinosWrappers::MPI::Vector    inverse_diagonal;
+        const TrilinosWrappers::MPI::Vector     &inverse_schur_diagonal;
       };
     } // namespace
 
@@ -193,7 +157,7 @@ namespace mpm
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       stiffness.reinit(owned_partitioning, dsp, comm);
       load.reinit(owned_partitioning, comm);
-      pressure_mass_diagonal.reinit(owned_partitioning, comm);
+      inverse_schur_diagonal.reinit(owned_partitioning, comm);
       solution.reinit(owned_partitioning, relevant_partitioning, comm);
     }
 
@@ -201,10 +165,9 @@ namespace mpm
     typename DistributedElasticSystem<dim>::SolveStatistics
     DistributedElasticSystem<dim>::solve_static()
     {
-      const auto &bc = parameters.boundary;
-      if (bc.clamped.empty() && bc.prescribed.empty() &&
-          constraints_admit_rigid_motion(
-            element.mapping, dofs, constraints, load))
+      if (!parameters.boundary.has_dirichlet() &&
+          n_admissible_rigid_motions(element.mapping, dofs, constraints, load) >
+            0)
         throw InputError(free_body_message);
 
       SolveStatistics statistics;
@@ -212,7 +175,7 @@ namespace mpm
 
       stiffness              = 0;
       load                   = 0;
-      pressure_mass_diagonal = 0;
+      inverse_schur_diagonal = 0;
       ElasticCellAssembler<dim> assembler(parameters, element);
       typename ElasticCellAssembler<dim>::CellSystem cell_system;
       const unsigned int                   n = element.fe->n_dofs_per_cell();
@@ -231,21 +194,22 @@ namespace mpm
               constraints.distribute_local_to_global(
                 cell_system.pressure_mass_diagonal,
                 indices,
-                pressure_mass_diagonal);
+                inverse_schur_diagonal);
           }
       stiffness.compress(VectorOperation::add);
       load.compress(VectorOperation::add);
       if (element.mixed)
         {
-          pressure_mass_diagonal.compress(VectorOperation::add);
-          auto        &d = pressure_mass_diagonal.block(1);
+          inverse_schur_diagonal.compress(VectorOperation::add);
+          auto        &d = inverse_schur_diagonal.block(1);
           const double scale =
             1. / (2 * element.moduli.mu) + element.moduli.inverse_lambda;
           // a block's indices count from the block's first dof; a
           // constrained pressure (hanging node) has no mass of its own
           const types::global_dof_index first = owned_partitioning[0].size();
           for (const auto i : d.locally_owned_elements())
-            d[i] = constraints.is_constrained(first + i) ? 1. : scale * d[i];
+            d[i] =
+              constraints.is_constrained(first + i) ? 1. : 1. / (scale * d[i]);
           d.compress(VectorOperation::insert);
         }
       statistics.assembly_seconds = timer.wall_time();
@@ -274,7 +238,7 @@ namespace mpm
                            x,
                            load,
                            BlockDiagonalPreconditioner(
-                             amg, pressure_mass_diagonal.block(1)));
+                             amg, inverse_schur_diagonal.block(1)));
             }
           else
             {

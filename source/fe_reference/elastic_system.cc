@@ -35,14 +35,6 @@ namespace mpm
     {}
 
     template <int dim>
-    bool
-    ElasticSystem<dim>::has_dirichlet_boundary() const
-    {
-      return !parameters.boundary.clamped.empty() ||
-             !parameters.boundary.prescribed.empty();
-    }
-
-    template <int dim>
     void
     ElasticSystem<dim>::setup()
     {
@@ -89,7 +81,7 @@ namespace mpm
     unsigned int
     ElasticSystem<dim>::n_rigid_body_motions() const
     {
-      if (has_dirichlet_boundary())
+      if (parameters.boundary.has_dirichlet())
         return 0;
       // the constraints (slip, hanging nodes) are homogeneous here
       return n_admissible_rigid_motions(element.mapping,

@@ -105,14 +105,6 @@ namespace mpm
         row.quantity = row.values[parameters.analysis.component];
       }
 
-      /// The quantity's relative change to the previous run.
-      void
-      set_change(const std::vector<StudyRow> &rows, StudyRow &row)
-      {
-        if (!rows.empty())
-          row.change = std::abs(row.quantity - rows.back().quantity) /
-                       std::max(std::abs(row.quantity), 1e-300);
-      }
     } // namespace
 
     template <int dim>
@@ -152,6 +144,8 @@ namespace mpm
       Modes                                          modes;
       for (const unsigned int r : parameters.discretisation.refinements)
         {
+          StudyRow row;
+          row.refinements = r;
           if (distributed)
             {
               distributed_system.reset();
@@ -163,9 +157,6 @@ namespace mpm
                 std::make_unique<DistributedElasticSystem<dim>>(
                   parameters, distributed_tria);
               distributed_system->setup();
-
-              StudyRow row;
-              row.refinements       = r;
               row.cells             = distributed_tria.n_global_active_cells();
               row.dofs              = distributed_system->n_dofs();
               const auto statistics = distributed_system->solve_static();
@@ -174,46 +165,44 @@ namespace mpm
               row.amg_setup_seconds = statistics.amg_setup_seconds;
               row.solve_seconds     = statistics.solve_seconds;
               record_point_values(*distributed_system, parameters, row);
-              set_change(rows, row);
-              print_row<dim>(log, row, rows.empty());
-              log << "        " << row.linear_iterations << " "
-                  << (distributed_system->mixed() ? "MINRES" : "CG")
-                  << " iterations with AMG on "
-                  << Utilities::MPI::n_mpi_processes(comm)
-                  << " processes; wall time: assembly " << std::fixed
-                  << std::setprecision(2) << row.assembly_seconds
-                  << " s, AMG set-up " << row.amg_setup_seconds << " s, solve "
-                  << row.solve_seconds << " s" << std::defaultfloat
-                  << std::endl;
-              rows.push_back(row);
-              continue;
-            }
-          system.reset();
-          create_coarse_mesh(tria, parameters.geometry, input_folder);
-          tria.refine_global(r);
-          system = std::make_unique<ElasticSystem<dim>>(parameters, tria);
-          system->setup();
-
-          StudyRow row;
-          row.refinements = r;
-          row.cells       = tria.n_active_cells();
-          row.dofs        = system->dof_handler().n_dofs();
-          if (modal)
-            {
-              system->assemble_stiffness_and_mass();
-              modes = compute_modes(*system, parameters.analysis.n_modes);
-              for (const double w2 : modes.omega_squared)
-                row.values.push_back(std::sqrt(w2));
-              row.quantity         = 2 * M_PI / row.values[0];
-              row.rigid_body_modes = modes.n_rigid_body_modes;
             }
           else
             {
-              system->solve_static();
-              record_point_values(*system, parameters, row);
+              system.reset();
+              create_coarse_mesh(tria, parameters.geometry, input_folder);
+              tria.refine_global(r);
+              system = std::make_unique<ElasticSystem<dim>>(parameters, tria);
+              system->setup();
+              row.cells = tria.n_active_cells();
+              row.dofs  = system->dof_handler().n_dofs();
+              if (modal)
+                {
+                  system->assemble_stiffness_and_mass();
+                  modes = compute_modes(*system, parameters.analysis.n_modes);
+                  for (const double w2 : modes.omega_squared)
+                    row.values.push_back(std::sqrt(w2));
+                  row.quantity         = 2 * M_PI / row.values[0];
+                  row.rigid_body_modes = modes.n_rigid_body_modes;
+                }
+              else
+                {
+                  system->solve_static();
+                  record_point_values(*system, parameters, row);
+                }
             }
-          set_change(rows, row);
+          if (!rows.empty())
+            row.change = std::abs(row.quantity - rows.back().quantity) /
+                         std::max(std::abs(row.quantity), 1e-300);
           print_row<dim>(log, row, rows.empty());
+          if (distributed)
+            log << "        " << row.linear_iterations << " "
+                << (distributed_system->mixed() ? "MINRES" : "CG")
+                << " iterations with AMG on "
+                << Utilities::MPI::n_mpi_processes(comm)
+                << " processes; wall time: assembly " << std::fixed
+                << std::setprecision(2) << row.assembly_seconds
+                << " s, AMG set-up " << row.amg_setup_seconds << " s, solve "
+                << row.solve_seconds << " s" << std::defaultfloat << std::endl;
           rows.push_back(row);
         }
 

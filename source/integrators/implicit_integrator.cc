@@ -857,28 +857,16 @@ namespace mpm
               {
                 Tensor<2, dim> dh;
                 dh[k] = q.G[b];
+                const Tensor<2, dim> dh_eff =
+                  smoothed ? smoothing->derivative(q, total, b, k) : dh;
                 if (filtered)
                   {
                     filtered_changes[p * n + b * dim + k] =
-                      kirchhoff_change(s,
-                                       q.j,
-                                       q.f_inv,
-                                       T,
-                                       dh,
-                                       smoothed ?
-                                         smoothing->derivative(q, total, b, k) :
-                                         dh);
+                      kirchhoff_change(s, q.j, q.f_inv, T, dh, dh_eff);
                     continue;
                   }
                 const Tensor<2, dim> dP =
-                  first_piola_change(s,
-                                     q.j,
-                                     q.f_inv,
-                                     T,
-                                     dh,
-                                     smoothed ?
-                                       smoothing->derivative(q, total, b, k) :
-                                       dh);
+                  first_piola_change(s, q.j, q.f_inv, T, dh, dh_eff);
                 for (unsigned int e = stencils.begin(p); e < stencils.end(p);
                      ++e)
                   {

@@ -8,10 +8,10 @@
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <mpm/integrators/nodal_linear_system.h>
+#include <mpm/utilities/elasticity_amg.h>
 
 DEAL_II_DISABLE_EXTRA_DIAGNOSTICS
 #include <Epetra_MultiVector.h>
-#include <Teuchos_ParameterList.hpp>
 DEAL_II_ENABLE_EXTRA_DIAGNOSTICS
 
 #include <cmath>
@@ -280,22 +280,10 @@ namespace mpm
           }
         else
           {
-            // ML with the rigid-body modes of the nodes as near-null space
-            // (translations, and rotations about the nodes' mean
-            // position): the aggregates then represent the elastic
-            // energy's kernel, and the iteration count stays nearly
-            // constant under refinement.
-            TrilinosWrappers::PreconditionAMG::AdditionalData data;
-            data.elliptic              = true;
-            data.higher_order_elements = false;
-            data.smoother_sweeps       = 2;
-            data.aggregation_threshold = 1e-4;
-            Teuchos::ParameterList              ml;
-            std::unique_ptr<Epetra_MultiVector> unused;
-            data.set_parameters(ml, unused, matrix);
-            const int   n_modes = dim == 1 ? 1 : dim == 2 ? 3 : 6;
-            const auto &map     = matrix.trilinos_matrix().OperatorDomainMap();
-            Epetra_MultiVector modes(map, n_modes);
+            // the rigid-body modes of the nodes, rotations about the nodes'
+            // mean position
+            const auto &map = matrix.trilinos_matrix().OperatorDomainMap();
+            Epetra_MultiVector modes(map, n_rigid_body_modes<dim>);
             const unsigned int n_owned = grid.n_owned_nodes();
             Point<dim>         centre;
             for (unsigned int i = 0; i < n_owned; ++i)
@@ -306,29 +294,12 @@ namespace mpm
             for (unsigned int i = 0; i < n_owned; ++i)
               {
                 const Tensor<1, dim> r = grid.node_position(i) - centre;
-                for (unsigned int c = 0; c < dim; ++c)
-                  modes[c][i * dim + c] = 1.;
-                if constexpr (dim == 2)
-                  {
-                    modes[2][2 * i]     = -r[1];
-                    modes[2][2 * i + 1] = r[0];
-                  }
-                if constexpr (dim == 3)
-                  {
-                    modes[3][3 * i + 1] = -r[2];
-                    modes[3][3 * i + 2] = r[1];
-                    modes[4][3 * i]     = r[2];
-                    modes[4][3 * i + 2] = -r[0];
-                    modes[5][3 * i]     = -r[1];
-                    modes[5][3 * i + 1] = r[0];
-                  }
+                for (unsigned int k = 0; k < n_rigid_body_modes<dim>; ++k)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    modes[k][i * dim + c] = rigid_body_mode<dim>(k, c, r);
               }
-            ml.set("PDE equations", int(dim));
-            ml.set("null space: type", "pre-computed");
-            ml.set("null space: dimension", n_modes);
-            ml.set("null space: vectors", modes.Values());
             TrilinosWrappers::PreconditionAMG amg;
-            amg.initialize(matrix, ml);
+            initialize_elasticity_amg(amg, matrix, modes, dim, false);
 
             SolverControl control(p.max_linear_iterations,
                                   p.linear_tolerance * rhs.l2_norm());

@@ -251,29 +251,47 @@ namespace mpm
     return result;
   }
 
+  namespace
+  {
+    /// A particle's stability limit h/(c + |v|), with its wave speed c
+    /// and its speed |v| (from the state, no update).
+    struct StabilityLimit
+    {
+      double limit, wave_speed, speed;
+    };
+
+    template <int dim>
+    StabilityLimit
+    stability_limit(const double                  h,
+                    const double                 *prop,
+                    const std::vector<Body<dim>> &bodies)
+    {
+      using L   = ParticleLayout<dim>;
+      double v2 = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        v2 += prop[L::velocity + d] * prop[L::velocity + d];
+      const auto &material =
+        *bodies[static_cast<unsigned int>(prop[L::body])].material;
+      const double c =
+        material.wave_speed(embed<dim>(load_matrix<dim>(prop + L::F), 1.));
+      const double speed = std::sqrt(v2);
+      return {h / (c + speed), c, speed};
+    }
+  } // namespace
+
   template <int dim>
   double
   stable_time_step(const BackgroundGrid<dim>       &grid,
                    Particles::ParticleHandler<dim> &particles,
                    const std::vector<Body<dim>>    &bodies)
   {
-    using L   = ParticleLayout<dim>;
     double dt = std::numeric_limits<double>::max();
     for_each_cell_with_particles(
       grid, particles, [&](const auto &cell, const auto &pic) {
         const double h = grid.cell_height(cell);
         for (const auto &p : pic)
-          {
-            const double *prop = p.get_properties().data();
-            double        v2   = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              v2 += prop[L::velocity + d] * prop[L::velocity + d];
-            const auto &material =
-              *bodies[static_cast<unsigned int>(prop[L::body])].material;
-            const double c = material.wave_speed(
-              embed<dim>(load_matrix<dim>(prop + L::F), 1.));
-            dt = std::min(dt, h / (c + std::sqrt(v2)));
-          }
+          dt = std::min(
+            dt, stability_limit(h, p.get_properties().data(), bodies).limit);
       });
     return dt;
   }
@@ -296,24 +314,20 @@ namespace mpm
             if (found_bad)
               return;
             const double *prop = p.get_properties().data();
-            // |v| without squaring (1e200 stays finite)
-            double speed = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              speed = std::hypot(speed, prop[L::velocity + d]);
-            const unsigned int body = static_cast<unsigned int>(prop[L::body]);
-            const double       c    = bodies[body].material->wave_speed(
-              embed<dim>(load_matrix<dim>(prop + L::F), 1.));
-            const double limit = h / (c + speed);
-            const bool   bad   = !(limit > 0) || !std::isfinite(limit);
-            if (bad || limit < smallest)
+            const auto    s    = stability_limit(h, prop, bodies);
+            const bool    bad  = !(s.limit > 0) || !std::isfinite(s.limit);
+            if (bad || s.limit < smallest)
               {
-                smallest = bad ? 0. : limit;
-                std::ostringstream s;
-                s << "particle " << p.get_id() << " of body " << body << " at ("
-                  << p.get_location() << "): h = " << h
-                  << ", wave speed c = " << c << ", |v| = " << speed
-                  << ", h/(c + |v|) = " << limit;
-                which     = s.str();
+                smallest = bad ? 0. : s.limit;
+                std::ostringstream text;
+                text << "particle " << p.get_id() << " of body "
+                     << static_cast<unsigned int>(prop[L::body]) << " at ("
+                     << p.get_location() << "): h = " << h
+                     << ", wave speed c = " << s.wave_speed << ", velocity (";
+                for (unsigned int d = 0; d < dim; ++d)
+                  text << (d > 0 ? " " : "") << prop[L::velocity + d];
+                text << "), |v| = " << s.speed << ", h/(c + |v|) = " << s.limit;
+                which     = text.str();
                 found_bad = bad;
               }
           }

@@ -43,52 +43,62 @@ namespace mpm
     current_constants = previous;
   }
 
+  namespace
+  {
+    /// The whole text as a plain number (stod also reads "inf" and "nan").
+    bool
+    plain_number(const std::string &text, double &value)
+    {
+      try
+        {
+          std::size_t used = 0;
+          value            = std::stod(text, &used);
+          return text.find_first_not_of(" \t", used) == std::string::npos;
+        }
+      catch (...)
+        {
+          return false;
+        }
+    }
+
+    /// An expression of pi and the Constants.
+    double
+    constant_expression(const std::string &entry, const std::string &text)
+    {
+      try
+        {
+          mu::Parser p;
+          p.DefineConst("pi", M_PI);
+          if (current_constants)
+            for (const auto &[name, value] : *current_constants)
+              p.DefineConst(name, value);
+          p.SetExpr(text);
+          return p.Eval();
+        }
+      catch (const mu::Parser::exception_type &e)
+        {
+          std::string known;
+          if (current_constants)
+            for (const auto &c : *current_constants)
+              known += (known.empty() ? "" : ", ") + c.first;
+          throw InputError(entry + " = '" + text +
+                           "' is neither a number nor an expression of the "
+                           "Constants (" +
+                           (known.empty() ? "none defined" : known) +
+                           "): " + e.GetMsg());
+        }
+    }
+  } // namespace
+
   double
   get_number(const dealii::ParameterHandler &prm, const std::string &entry)
   {
     const std::string text = prm.get(entry);
-    try
-      {
-        std::size_t  used  = 0;
-        const double value = std::stod(text, &used);
-        if (text.find_first_not_of(" \t", used) == std::string::npos)
-          {
-            // stod reads "inf" and "nan"
-            if (!std::isfinite(value))
-              throw InputError(entry + " = '" + text + "' is not finite");
-            return value;
-          }
-      }
-    catch (const InputError &)
-      {
-        throw;
-      }
-    catch (...)
-      {}
-    try
-      {
-        mu::Parser p;
-        p.DefineConst("pi", M_PI);
-        if (current_constants)
-          for (const auto &[name, value] : *current_constants)
-            p.DefineConst(name, value);
-        p.SetExpr(text);
-        const double value = p.Eval();
-        if (!std::isfinite(value))
-          throw InputError(entry + " = '" + text + "' is not finite");
-        return value;
-      }
-    catch (const mu::Parser::exception_type &e)
-      {
-        std::string known;
-        if (current_constants)
-          for (const auto &c : *current_constants)
-            known += (known.empty() ? "" : ", ") + c.first;
-        throw InputError(entry + " = '" + text +
-                         "' is neither a number nor an expression of the "
-                         "Constants (" +
-                         (known.empty() ? "none defined" : known) +
-                         "): " + e.GetMsg());
-      }
+    double            value;
+    if (!plain_number(text, value))
+      value = constant_expression(entry, text);
+    if (!std::isfinite(value))
+      throw InputError(entry + " = '" + text + "' is not finite");
+    return value;
   }
 } // namespace mpm

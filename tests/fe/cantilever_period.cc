@@ -109,7 +109,7 @@ namespace
   double
   fe_period(const std::string &boundary, unsigned int &n_rigid)
   {
-    const auto       p = fe_test::parameters<2>(R"(
+    const auto               p = fe_test::parameters<2>(R"(
 set Kinematic assumption = plane stress
 subsection Geometry
   set Lower corner = 0, 0
@@ -128,10 +128,8 @@ subsection Analysis
   set Number of modes = 2
 end
 )" + boundary);
-    Triangulation<2> tria;
-    mpm::fe_reference::create_coarse_mesh(tria, p.geometry, "");
-    mpm::fe_reference::ElasticSystem<2> system(p, tria);
-    system.setup();
+    fe_test::MeshedSystem<2> meshed(p);
+    auto                    &system = *meshed.system;
     system.assemble_stiffness_and_mass();
     const auto modes = mpm::fe_reference::compute_modes(system, 2);
     n_rigid          = modes.n_rigid_body_modes;

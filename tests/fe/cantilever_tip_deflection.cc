@@ -44,10 +44,8 @@ subsection Boundary conditions
   set Traction = 0; -1
 end
 )");
-  Triangulation<2>                 tria;
-  mpm::fe_reference::create_coarse_mesh(tria, p.geometry, "");
-  mpm::fe_reference::ElasticSystem<2> system(p, tria);
-  system.setup();
+  fe_test::MeshedSystem<2>         meshed(p);
+  auto                            &system = *meshed.system;
   system.solve_static();
 
   const double E = 1000, nu = 0.3, L = 10, H = 1, P = 1;

@@ -54,7 +54,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   {
-    const auto       p = fe_test::parameters<2>(beam + R"(
+    const auto               p = fe_test::parameters<2>(beam + R"(
 subsection Boundary conditions
   set Clamped boundary ids = 0
 end
@@ -63,10 +63,8 @@ subsection Analysis
   set Number of modes = 3
 end
 )");
-    Triangulation<2> tria;
-    mpm::fe_reference::create_coarse_mesh(tria, p.geometry, "");
-    mpm::fe_reference::ElasticSystem<2> system(p, tria);
-    system.setup();
+    fe_test::MeshedSystem<2> meshed(p);
+    auto                    &system = *meshed.system;
     system.assemble_stiffness_and_mass();
     const auto   modes = mpm::fe_reference::compute_modes(system, 3);
     const double H = 0.01, E = 1e7, rho = 1000;
@@ -91,7 +89,7 @@ end
   }
 
   {
-    const auto       p = fe_test::parameters<2>(beam + R"(
+    const auto               p = fe_test::parameters<2>(beam + R"(
 subsection Geometry
   set Subdivisions = 100, 1
 end
@@ -99,10 +97,8 @@ subsection Boundary conditions
   set Slip boundary ids = 2
 end
 )");
-    Triangulation<2> tria;
-    mpm::fe_reference::create_coarse_mesh(tria, p.geometry, "");
-    mpm::fe_reference::ElasticSystem<2> system(p, tria);
-    system.setup();
+    fe_test::MeshedSystem<2> meshed(p);
+    auto                    &system = *meshed.system;
     mpm_test::check(system.n_rigid_body_motions() == 1,
                     "slip base: one admissible rigid-body motion",
                     system.n_rigid_body_motions(),

@@ -96,8 +96,9 @@ namespace mpm
       dealii::AffineConstraints<double>           constraints;
       dealii::TrilinosWrappers::BlockSparseMatrix stiffness;
       dealii::TrilinosWrappers::MPI::BlockVector  load;
-      /// diag(M_p), the pressure block of the preconditioner (mixed only)
-      dealii::TrilinosWrappers::MPI::BlockVector pressure_mass_diagonal;
+      /// mixed only: diag(M_p) while assembling, then the inverse of the
+      /// preconditioner's pressure block (1/(2 mu) + 1/lambda) diag(M_p)
+      dealii::TrilinosWrappers::MPI::BlockVector inverse_schur_diagonal;
       /// with ghosts, for point values and output
       dealii::TrilinosWrappers::MPI::BlockVector solution;
     };

@@ -105,10 +105,6 @@ namespace mpm
         return mass;
       }
 
-      /// Whether a clamped or prescribed boundary removes the rigid modes.
-      bool
-      has_dirichlet_boundary() const;
-
       /// How many independent rigid-body motions satisfy every constraint:
       /// K's kernel (statics needs none; modal analysis skips as many
       /// near-zero modes). Zero with a clamped or prescribed boundary.

@@ -64,6 +64,13 @@ namespace mpm
       std::string traction;                ///< of x, y(, z)
       std::string body_force;              ///< per unit mass
 
+      /// Whether a clamped or prescribed boundary removes the rigid modes.
+      bool
+      has_dirichlet() const
+      {
+        return !clamped.empty() || !prescribed.empty();
+      }
+
       static void
       declare_parameters(dealii::ParameterHandler &prm, const int dim);
       void

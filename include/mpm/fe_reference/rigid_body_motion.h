@@ -8,6 +8,8 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <mpm/utilities/elasticity_amg.h>
+
 #include <algorithm>
 #include <limits>
 #include <vector>
@@ -30,24 +32,14 @@ namespace mpm
       double
       value(const dealii::Point<dim> &x, const unsigned int c) const override
       {
-        if (c >= dim)
-          return 0;
-        if (k < dim)
-          return c == k ? 1. : 0.;
-        // rotation about axis a: e_a x x
-        const unsigned int   a = dim == 2 ? 2 : k - dim;
-        dealii::Tensor<1, 3> x3, axis;
-        for (unsigned int d = 0; d < dim; ++d)
-          x3[d] = x[d];
-        axis[a] = 1;
-        return dealii::cross_product_3d(axis, x3)[c];
+        return c < dim ? rigid_body_mode<dim>(k, c, x) : 0.;
       }
 
     private:
       const unsigned int k;
     };
 
-    /// The static problem's message when constraints_admit_rigid_motion().
+    /// The static problem's message when n_admissible_rigid_motions() > 0.
     inline constexpr const char *free_body_message =
       "Boundary conditions: the clamped, slip and prescribed boundaries "
       "leave a rigid-body motion free, so the static problem has no "
@@ -70,7 +62,7 @@ namespace mpm
       const dealii::AffineConstraints<double> &constraints,
       const VectorType                        &prototype)
     {
-      const unsigned int      n_rigid = dim * (dim + 1) / 2;
+      const unsigned int      n_rigid = n_rigid_body_modes<dim>;
       std::vector<VectorType> violation;
       for (unsigned int k = 0; k < n_rigid; ++k)
         {
@@ -98,18 +90,5 @@ namespace mpm
       return n_admissible;
     }
 
-    /// Whether some rigid-body motion satisfies every constraint (then K
-    /// is singular and statics has no unique solution).
-    template <int dim, typename VectorType>
-    bool
-    constraints_admit_rigid_motion(
-      const dealii::Mapping<dim>              &mapping,
-      const dealii::DoFHandler<dim>           &dofs,
-      const dealii::AffineConstraints<double> &constraints,
-      const VectorType                        &prototype)
-    {
-      return n_admissible_rigid_motions(mapping, dofs, constraints, prototype) >
-             0;
-    }
   } // namespace fe_reference
 } // namespace mpm

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/exceptions.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +45,28 @@ namespace mpm
     while (!out.empty() && out.back() == ' ')
       out.pop_back();
     return out;
+  }
+
+  /**
+   * Run @p parse (a parse_parameters() call): a deal.II exception from it
+   * is a value that its pattern accepts but get_double() cannot represent
+   * (1e-320 underflows to a denormal, 1e400 overflows), an InputError
+   * naming the entry.
+   */
+  template <typename Parse>
+  void
+  parse_with_range_check(const Parse &parse)
+  {
+    try
+      {
+        parse();
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        throw InputError(clean_dealii_message(e.what()) +
+                         " (a number outside the range of double precision, "
+                         "about 2.2e-308 to 1.8e308?)");
+      }
   }
 
   /**
