@@ -227,13 +227,23 @@ namespace mpm
       timer.restart();
       TrilinosWrappers::MPI::BlockVector x(owned_partitioning, comm);
       const auto                        &solver = parameters.solver;
-      SolverControl                      control(solver.max_iterations,
-                            solver.tolerance * load.l2_norm());
+      // CG measures the true residual against the load. MINRES measures
+      // the residual in the preconditioner's norm, whose scale follows the
+      // inverse moduli: it is reduced by the same fraction instead, so
+      // that the accuracy does not depend on the units.
+      const double  load_norm = load.l2_norm();
+      SolverControl cg_control(solver.max_iterations,
+                               solver.tolerance * load_norm);
+      ReductionControl minres_control(solver.max_iterations,
+                                      0.,
+                                      solver.tolerance);
+      SolverControl   &control = element.mixed ? minres_control : cg_control;
       try
         {
           if (element.mixed)
             {
-              SolverMinRes<TrilinosWrappers::MPI::BlockVector> minres(control);
+              SolverMinRes<TrilinosWrappers::MPI::BlockVector> minres(
+                minres_control);
               minres.solve(stiffness,
                            x,
                            load,
@@ -242,7 +252,7 @@ namespace mpm
             }
           else
             {
-              SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+              SolverCG<TrilinosWrappers::MPI::Vector> cg(cg_control);
               cg.solve(stiffness.block(0, 0), x.block(0), load.block(0), amg);
             }
         }
@@ -252,7 +262,10 @@ namespace mpm
           s << "in the linear solve: " << (element.mixed ? "MINRES" : "CG")
             << " did not reach Linear solver/Tolerance = " << solver.tolerance
             << " in " << e.last_step << " iterations (relative residual "
-            << e.last_residual / std::max(load.l2_norm(), 1e-300)
+            << e.last_residual /
+                 std::max(element.mixed ? minres_control.initial_value() :
+                                          load_norm,
+                          1e-300)
             << "; raise Maximum iterations)";
           throw RuntimeError(s.str());
         }

@@ -329,7 +329,10 @@ namespace mpm
                         "1e-10",
                         Patterns::Double(1e-16, 1e-2),
                         "AMG: the iteration stops when the residual is "
-                        "below this fraction of the load vector's norm.");
+                        "below this fraction of the load vector's norm (CG), "
+                        "or when the residual in the preconditioner's norm "
+                        "is below this fraction of its initial value "
+                        "(MINRES, mixed formulation).");
       prm.declare_entry("Maximum iterations",
                         "10000",
                         Patterns::Integer(1),

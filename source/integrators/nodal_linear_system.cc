@@ -310,10 +310,13 @@ namespace mpm
               }
             else
               {
+                // Right preconditioning: the tolerance applies to the
+                // true residual (a force), not to the preconditioned one,
+                // which AMG scales by the inverse stiffness.
                 SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
                   control,
                   SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-                    100));
+                    100, true));
                 gmres.solve(matrix, x, rhs, amg);
               }
             result.iterations = control.last_step();
