@@ -5,9 +5,11 @@
 #include <deal.II/base/mpi.h>
 
 #include <mpm/parameters/parameters.h>
+#include <mpm/solver/resource_estimate.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
 
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -52,6 +54,17 @@ namespace
     mpm::Parameters::AllParameters<dim> parameters;
     parameters.file_name = file;
     mpm::parse_with_range_check([&]() { parameters.parse_parameters(prm); });
+    // Count before allocating: a case that cannot fit is refused now,
+    // not after minutes of allocation.
+    const auto estimate = mpm::estimate_resources(
+      parameters,
+      std::filesystem::path(file).parent_path().string(),
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    const bool   limit_given = parameters.memory_limit > 0;
+    const double limit       = limit_given ?
+                                 parameters.memory_limit * 1e9 :
+                                 mpm::available_memory(MPI_COMM_WORLD);
+    mpm::check_resources(estimate, limit, limit_given);
     // Errors leave the simulator's scope normally (its timer would complain
     // about being destroyed during stack unwinding) and are re-thrown.
     std::exception_ptr error;
@@ -65,7 +78,12 @@ namespace
               if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
                 std::cout << "mpm: " << file << " is valid ("
                           << simulator.particles().n_global_particles()
-                          << " particles)" << std::endl;
+                          << " particles)\n  memory estimate: "
+                          << estimate.summary() << "; "
+                          << (limit > 0 ? mpm::gigabytes(limit) :
+                                          std::string("unknown"))
+                          << (limit_given ? " allowed" : " available")
+                          << std::endl;
             }
           else
             simulator.run();

@@ -713,6 +713,15 @@ namespace mpm
                         "to the statistics file (see doc/benchmarks.md), or "
                         "none. Each reads its constants from Constants:" +
                           benchmarks::benchmark_list());
+      prm.declare_entry(
+        "Memory limit",
+        "0",
+        Patterns::Double(0),
+        "Memory the case may use over all ranks [GB]. Before anything is "
+        "allocated, the grid cells and particles are counted and their "
+        "memory estimated from below (--validate prints the estimate); a "
+        "case that needs more is refused. 0: the memory available on the "
+        "machines the ranks run on (MemAvailable, or a container's limit).");
       Grid<dim>::declare_parameters(prm);
       TimeStepping::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);
@@ -762,7 +771,8 @@ namespace mpm
       if (!ok)
         throw InputError("Kinematic assumption = '" + k +
                          "' does not fit Dimension = " + std::to_string(dim));
-      benchmark = prm.get("Benchmark");
+      benchmark    = prm.get("Benchmark");
+      memory_limit = prm.get_double("Memory limit");
       constants = parse_constants(prm.get("Constants"), "Constants");
 
       grid.parse_parameters(prm);

@@ -190,6 +190,9 @@ namespace mpm
       ImplicitSolver         implicit;
       std::string            benchmark = "none";
       std::map<std::string, double> constants;
+      /// Memory the case may use [GB]; 0: what the machines have
+      /// (solver/resource_estimate.h).
+      double memory_limit = 0;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm,
