@@ -170,6 +170,7 @@ main(int argc, char **argv)
   try
     {
       const auto pre = mpm::Parameters::read_preamble(file);
+      pre.require_every_body_described(file);
       switch (pre.dimension)
         {
           case 1:

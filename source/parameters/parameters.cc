@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace mpm
@@ -618,7 +619,8 @@ namespace mpm
       }
 
       /// Parse the expanded file; errors name the original file and line.
-      void
+      /// Returns the expanded lines.
+      std::vector<SourceLine>
       parse_expanded(ParameterHandler  &prm,
                      const std::string &file_name,
                      const bool         skip_undefined)
@@ -650,25 +652,77 @@ namespace mpm
               }
             throw InputError(msg);
           }
+        return lines;
+      }
+
+      /// The i of every `subsection Body i` inside `subsection Bodies`.
+      std::set<unsigned int>
+      described_bodies(const std::vector<SourceLine> &lines)
+      {
+        std::set<unsigned int>   found;
+        std::vector<std::string> path;
+        for (const auto &l : lines)
+          {
+            std::istringstream words(l.text.substr(0, l.text.find('#')));
+            std::string        keyword, name, word;
+            words >> keyword;
+            if (keyword == "end" && !path.empty())
+              path.pop_back();
+            else if (keyword == "subsection")
+              {
+                // deal.II reads the name with single spaces
+                while (words >> word)
+                  name += (name.empty() ? "" : " ") + word;
+                path.push_back(name);
+                if (path.size() == 2 && path[0] == "Bodies" &&
+                    name.compare(0, 5, "Body ") == 0)
+                  try
+                    {
+                      found.insert(std::stoul(name.substr(5)));
+                    }
+                  catch (...)
+                    {
+                      // not a number: deal.II names the unknown section
+                    }
+              }
+          }
+        return found;
       }
     } // namespace
 
     Preamble
     read_preamble(const std::string &file_name)
     {
-      ParameterHandler prm;
+      ParameterHandler        prm;
+      std::vector<SourceLine> lines;
       declare_preamble(prm);
       try
         {
-          parse_expanded(prm, file_name, /*skip_undefined=*/true);
+          lines = parse_expanded(prm, file_name, /*skip_undefined=*/true);
         }
       catch (const InputError &e)
         {
           throw InputError("Error reading the parameter file '" + file_name +
                            "': " + e.what());
         }
-      return {static_cast<unsigned int>(prm.get_integer("Dimension")),
-              static_cast<unsigned int>(prm.get_integer("Number of bodies"))};
+      Preamble preamble;
+      preamble.dimension = prm.get_integer("Dimension");
+      preamble.n_bodies  = prm.get_integer("Number of bodies");
+      preamble.described_bodies = described_bodies(lines);
+      return preamble;
+    }
+
+    void
+    Preamble::require_every_body_described(const std::string &file_name) const
+    {
+      for (unsigned int i = 0; i < n_bodies; ++i)
+        if (described_bodies.count(i) == 0)
+          throw InputError(
+            "Error in the parameter file '" + file_name +
+            "': Number of bodies = " + std::to_string(n_bodies) +
+            ", but there is no subsection Bodies/" + body_section(i) +
+            " (bodies are numbered from 0; a body without its subsection "
+            "would be the default body)");
     }
 
     void

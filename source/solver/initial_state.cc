@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm/shape_functions/family_registry.h>
+#include <mpm/particles/body_overlap.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/numbers.h>
@@ -58,6 +59,10 @@ namespace mpm
           planned = count_planned_particles();
       }
     create_particles(planned);
+    check_bodies_do_not_overlap(state.bodies,
+                                state.particle_handler,
+                                input_folder,
+                                comm);
   }
 
   template <int dim>

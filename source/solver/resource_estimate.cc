@@ -22,7 +22,7 @@ namespace mpm
     {
       double grid_cell, particle, domain_particle, implicit_body_cell;
     };
-    constexpr BytesPer bytes_per[3] = {{380, 240, 290, 900},
+    constexpr BytesPer bytes_per[3] = {{380, 240, 290, 850},
                                        {620, 290, 420, 2800},
                                        {1100, 410, 730, 11500}};
     /// the program, libraries' data and buffers of one rank

@@ -11,6 +11,7 @@
 #include <mpm/shape_functions/family.h>
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -213,6 +214,14 @@ namespace mpm
     {
       unsigned int dimension = 2;
       unsigned int n_bodies  = 1;
+      /// the i of every `subsection Body i` inside `subsection Bodies`
+      std::set<unsigned int> described_bodies;
+
+      /// An InputError unless Body 0 ... Body n_bodies-1 are all
+      /// described: an undescribed body would silently be the default
+      /// body, on top of any other default one.
+      void
+      require_every_body_described(const std::string &file_name) const;
     };
     Preamble
     read_preamble(const std::string &file_name);
