@@ -6,11 +6,13 @@
 #include <deal.II/distributed/tria.h>
 
 #include <mpm/io/checkpoint.h>
+#include <mpm/io/disk_space.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/wall_clock.h>
 
 #include <csignal>
+#include <filesystem>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
@@ -340,6 +342,33 @@ namespace mpm
     const std::string  prefix = "while writing the checkpoint of step " +
                                std::to_string(state.current_step) + ": ";
 
+    // p4est aborts the process when a write fails: the checkpoint must
+    // fit before it is begun. It takes about what the latest one took,
+    // or what its particles and cells need.
+    state.particle_handler.update_cached_numbers();
+    const double particle_bytes =
+      8. * state.particle_handler.n_global_particles() *
+      (state.layout.n_properties() + 2 * dim + 2);
+    const double cell_bytes =
+      64. * state.background.triangulation().n_global_active_cells();
+    on_root<RuntimeError>(comm, prefix, [&]() {
+      const std::string latest = checkpoint::latest(out.directory);
+      std::error_code   no_file;
+      const auto        statistics_size =
+        std::filesystem::file_size(out.directory + "/statistics.txt", no_file);
+      double needed = particle_bytes + cell_bytes + 16384. +
+                      (no_file ? 0. : double(statistics_size));
+      if (!latest.empty())
+        needed = std::max<double>(needed, checkpoint::folder_size(latest));
+      require_space(
+        out.directory,
+        1.1 * needed,
+        latest.empty() ?
+          "No checkpoint was written; the output so far is kept." :
+          "The latest checkpoint, " + latest +
+            ", is intact: make room and continue with mpm --resume.");
+    });
+
     // A new folder; the latest complete checkpoint stays as it is.
     std::string folder, problem;
     on_root<RuntimeError>(comm, prefix, [&]() {
@@ -349,7 +378,6 @@ namespace mpm
 
     // Grid and particles (collective in 2D/3D: p4est writes one file for
     // all ranks, the particles travel as data attached to the cells).
-    state.particle_handler.update_cached_numbers();
     if constexpr (dim > 1)
       {
         state.particle_handler.prepare_for_serialization();

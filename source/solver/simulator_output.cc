@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm/io/atomic_files.h>
+#include <mpm/io/disk_space.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/wall_clock.h>
@@ -150,10 +151,14 @@ namespace mpm
     // disk, say) is collected and reported on all ranks afterwards, so no
     // rank waits for another that has given up.
     FirstProblem problem;
-    auto         attempt = [&](const auto &write) {
-      problem.record(clean_dealii_message(problem_of(write)));
+    auto attempt = [&](const std::string &what, const auto &write) {
+      const std::string p = problem_of(write);
+      if (!p.empty())
+        problem.record("cannot write " + what + " in '" + out.directory +
+                       "'" + free_space_note(out.directory) + ": " +
+                       clean_dealii_message(p));
     };
-    attempt([&]() {
+    attempt("statistics.txt", [&]() {
       auto values = integrator->statistics_values();
       values.insert(values.end(), extra.begin(), extra.end());
       statistics_file->write_row(
@@ -161,12 +166,12 @@ namespace mpm
     });
     if (out.write_vtu)
       {
-        attempt([&]() {
+        attempt("the particle vtu files", [&]() {
           writer->write_particles_vtu(state.particle_handler,
                                       state.current_time);
         });
         if (out.write_grid)
-          attempt([&]() {
+          attempt("the grid vtu files", [&]() {
             writer->write_grid_vtu(state.background,
                                    state.p2g,
                                    state.kinematics,
@@ -174,7 +179,7 @@ namespace mpm
           });
       }
     if (out.write_csv)
-      attempt([&]() {
+      attempt("the particle csv file", [&]() {
         writer->write_particles_csv(state.particle_handler, state.current_time);
       });
     writer->advance();

@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# usage: full_disk.sh MPM CASE.prm NP
+#
+# A checkpoint or an output file that does not fit on the disk ends the
+# run with status 2 and a message naming the directory and its free
+# space; the latest checkpoint stays intact, and once there is room
+# `mpm --resume` ends as the uninterrupted run.
+# 1. ref/: the case (without vtu files) run to its end.
+# 2. The same in a file system (tmpfs) with room for two checkpoints
+#    and the small files: the third is refused before it is begun (status 2,
+#    "no room on the disk", the free space named, the latest intact).
+# 3. The file system enlarged: `mpm --resume` continues from the latest
+#    checkpoint and ends with ref's statistics, byte for byte.
+# 4. With vtu output into a file system of 40 kB: status 2, the output
+#    directory and its free space named.
+# Needs tmpfs mounts (root): skipped with status 77 where not permitted.
+set -u
+mpm=$1 case=$2 np=$3
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+run_mpm() {
+  if [ "$np" -gt 1 ]; then timeout 300 mpirun -np "$np" "$mpm" "$@"
+  else timeout 300 "$mpm" "$@"; fi
+}
+fail() { echo "FAIL: $*"; exit 1; }
+here=$(pwd)
+disk=$here/disk
+cleanup() { cd "$here"; umount "$disk" 2>/dev/null; true; }
+trap cleanup EXIT
+
+umount "$disk" 2>/dev/null
+rm -rf ref "$disk" && mkdir ref "$disk" || exit 1
+if ! mount -t tmpfs -o size=1m tmpfs "$disk" 2>/dev/null; then
+  echo "SKIPPED: cannot mount a tmpfs here (needs root and permission)"
+  exit 77
+fi
+umount "$disk"
+
+cat > ref/case.prm <<P
+include $case
+subsection Output
+  set Write vtu = false
+  set Write csv = false
+end
+P
+(cd ref && run_mpm case.prm > screen.txt 2>&1) \
+  || { cat ref/screen.txt; fail "the reference run failed"; }
+latest=$(cat ref/results/checkpoint/latest.txt)
+checkpoint_kb=$(du -sk "ref/results/checkpoint/$latest" | cut -f1)
+
+# room for two checkpoints and the small files, not for a third
+size_kb=$((checkpoint_kb * 2 + 32))
+mount -t tmpfs -o size=${size_kb}k tmpfs "$disk" || fail "mount"
+cp ref/case.prm "$disk/"
+(cd "$disk" && run_mpm case.prm > screen.txt 2>&1)
+rc=$?
+[ "$rc" = 2 ] || { cat "$disk/screen.txt"; fail "full disk: exit status $rc, expected 2"; }
+grep -q "while writing the checkpoint of step [0-9]*: no room on the disk: about .* MB are needed in 'results', the file system has .* MB free" "$disk/screen.txt" \
+  || { cat "$disk/screen.txt"; fail "full disk: the message names neither the checkpoint nor the free space"; }
+grep -q "is intact" "$disk/screen.txt" \
+  || { cat "$disk/screen.txt"; fail "full disk: the message does not name the intact checkpoint"; }
+echo "OK   checkpoint on a full disk: status 2, $(grep -o 'the checkpoint of step.*free' "$disk/screen.txt")"
+
+mount -o remount,size=$((size_kb * 4))k "$disk" || fail "remount"
+(cd "$disk" && run_mpm --resume case.prm > screen2.txt 2>&1) \
+  || { cat "$disk/screen2.txt"; fail "the resume after freeing space failed"; }
+cmp -s ref/results/statistics.txt "$disk/results/statistics.txt" \
+  || fail "the resumed run's statistics differ from the uninterrupted run's"
+echo "OK   resumed once there was room: statistics equal the uninterrupted run's"
+umount "$disk"
+
+mount -t tmpfs -o size=40k tmpfs "$disk" || fail "mount"
+cat > "$disk/case.prm" <<P
+include $case
+subsection Output
+  set Write vtu = true
+end
+subsection Checkpointing
+  set Steps between checkpoints = 0
+end
+P
+(cd "$disk" && run_mpm case.prm > screen.txt 2>&1)
+rc=$?
+[ "$rc" = 2 ] || { cat "$disk/screen.txt"; fail "vtu on a full disk: exit status $rc, expected 2"; }
+grep -q "cannot write .* in 'results' (the file system of 'results' has" "$disk/screen.txt" \
+  || { cat "$disk/screen.txt"; fail "vtu on a full disk: the message does not name the directory and its free space"; }
+echo "OK   output on a full disk: status 2, $(grep -o "cannot write [^:]*" "$disk/screen.txt" | head -1)"
