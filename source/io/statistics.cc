@@ -4,6 +4,8 @@
 #include <mpm/io/statistics.h>
 #include <mpm/particles/particle_layout.h>
 
+#include <algorithm>
+#include <array>
 #include <iomanip>
 #include <limits>
 
@@ -19,8 +21,20 @@ namespace mpm
   {
     using L = ParticleLayout<dim>;
     // Local sums in one array, reduced with one collective call.
-    constexpr unsigned int n        = 4 + dim + 3;
+    constexpr unsigned int n        = 4 + dim + 3 + 1;
     double                 local[n] = {};
+    // the loads per body where they are constant; NaN otherwise
+    std::vector<std::array<double, 2 * dim>> load(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        load[b].fill(std::numeric_limits<double>::quiet_NaN());
+        if (bodies[b].body_force.is_constant())
+          bodies[b].body_force.value({}, 0., load[b].data());
+        if (!bodies[b].has_traction())
+          std::fill(load[b].begin() + dim, load[b].end(), 0.);
+        else if (bodies[b].traction.is_constant())
+          bodies[b].traction.value({}, 0., load[b].data() + dim);
+      }
     for (const auto &p : particles)
       {
         const double *prop = p.get_properties().data();
@@ -60,6 +74,13 @@ namespace mpm
         const Tensor<1, 3> h = m * cross_product_3d(x, v);
         for (unsigned int d = 0; d < 3; ++d)
           local[4 + dim + d] += h[d];
+        const auto  &f    = load[static_cast<unsigned int>(prop[L::body])];
+        const double area = prop[L::traction_area];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double u = x[d] - prop[L::X + d];
+            local[n - 1] += (m * f[d] + (area > 0 ? area * f[dim + d] : 0.)) * u;
+          }
       }
     double global[n];
     Utilities::MPI::sum(ArrayView<const double>(local, n),
@@ -73,6 +94,7 @@ namespace mpm
       momentum[d] = global[4 + d];
     for (unsigned int d = 0; d < 3; ++d)
       angular_momentum[d] = global[4 + dim + d];
+    load_work = global[n - 1];
   }
 
   template <int dim>

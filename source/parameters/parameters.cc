@@ -455,6 +455,23 @@ namespace mpm
                         "10",
                         Patterns::Double(0),
                         "Wall-clock seconds between progress lines.");
+      prm.declare_entry(
+        "Energy balance check",
+        "warn",
+        Patterns::Selection("none|warn|stop"),
+        "At every output, kinetic + strain energy less the work of the "
+        "loads since the start (or the resume) is compared with its first "
+        "value: walls, damping, plasticity, viscosity and PIC only take "
+        "energy out, so growth means the scheme creates energy. warn: one "
+        "warning naming the step; stop: a runtime error (status 2). Only "
+        "with constant body forces and tractions and no prescribed motion, "
+        "whose work is known.");
+      prm.declare_entry("Energy balance tolerance",
+                        "0.1",
+                        Patterns::Double(0),
+                        "Growth of the balance that is reported, as a "
+                        "fraction of the largest kinetic + strain energy or "
+                        "load work seen.");
       prm.leave_subsection();
     }
 
@@ -469,6 +486,11 @@ namespace mpm
       write_csv         = prm.get_bool("Write csv");
       test_summary      = prm.get("Test summary file");
       progress_interval = prm.get_double("Progress interval");
+      const std::string check = prm.get("Energy balance check");
+      energy_check     = check == "none" ? EnergyCheck::none :
+                         check == "stop" ? EnergyCheck::stop :
+                                           EnergyCheck::warn;
+      energy_tolerance = prm.get_double("Energy balance tolerance");
       prm.leave_subsection();
       if (directory.empty())
         throw InputError("Output/Directory must not be empty");

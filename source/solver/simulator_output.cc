@@ -220,6 +220,12 @@ namespace mpm
           << limiting_particle_text();
         throw RuntimeError(s.str());
       }
+    energy_watch->check(stats,
+                        state.current_step,
+                        state.current_time,
+                        Utilities::MPI::this_mpi_process(comm) == 0 ?
+                          &std::cerr :
+                          nullptr);
   }
 
   template <int dim>
@@ -275,7 +281,12 @@ namespace mpm
       pcout << ", end time " << p.time.end_time << '\n'
             << "  load step: " << p.time.time_step << '\n';
     pcout << "  output: " << p.output.directory << "/ every "
-          << p.output.interval << " s" << std::endl;
+          << p.output.interval << " s; energy balance ";
+    if (energy_watch->not_watched().empty())
+      pcout << "watched (tolerance " << p.output.energy_tolerance << ")"
+            << std::endl;
+    else
+      pcout << "not watched: " << energy_watch->not_watched() << std::endl;
     if (resumed())
       pcout << "  resumed from the checkpoint " << resume_folder << " at step "
             << state.current_step << ", t = " << state.current_time

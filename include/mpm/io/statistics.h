@@ -21,6 +21,9 @@ namespace mpm
     double             momentum[dim]       = {};
     double             angular_momentum[3] = {}; // about the origin
     double             removed_mass        = 0;
+    /// Work of the constant body forces and tractions since the start,
+    /// sum of (m b + A t) . (x - X); NaN if a load varies.
+    double load_work = 0;
 
     /// Compute on every rank (collective).
     void

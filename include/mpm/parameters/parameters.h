@@ -138,6 +138,15 @@ namespace mpm
       bool        write_grid = true;
       std::string test_summary;
       double      progress_interval = 10.0;
+      /// The energy balance at every output (solver/energy_watch.h).
+      enum class EnergyCheck
+      {
+        none,
+        warn,
+        stop
+      };
+      EnergyCheck energy_check     = EnergyCheck::warn;
+      double      energy_tolerance = 0.1;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

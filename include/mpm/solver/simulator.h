@@ -11,6 +11,7 @@
 #include <mpm/io/checkpoint.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
+#include <mpm/solver/energy_watch.h>
 #include <mpm/solver/simulation_state.h>
 
 #include <array>
@@ -243,6 +244,7 @@ namespace mpm
     std::unique_ptr<TimeIntegrator<dim>>        integrator;
     std::vector<std::string>                    history_names;
     std::unique_ptr<benchmarks::Benchmark<dim>> benchmark;
+    std::unique_ptr<EnergyWatch<dim>>           energy_watch;
     std::array<ParticleBalance, 2>              setup_balance;
 
     std::unique_ptr<OutputWriter<dim>>   writer;

@@ -1,0 +1,78 @@
+#include <mpm/solver/energy_watch.h>
+#include <mpm/utilities/input_error.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace mpm
+{
+  template <int dim>
+  EnergyWatch<dim>::EnergyWatch(const Parameters::Output     &output,
+                                const std::vector<Body<dim>> &bodies)
+    : action(output.energy_check)
+    , tolerance(output.energy_tolerance)
+  {
+    using Check = Parameters::Output::EnergyCheck;
+    if (action == Check::none)
+      reason = "Output/Energy balance check = none";
+    for (const auto &body : bodies)
+      if (reason.empty())
+        {
+          const std::string name =
+            "Bodies/" + Parameters::body_section(body.index);
+          if (body.is_rigid())
+            reason = name + " moves as prescribed (its work is not known)";
+          else if (!body.body_force.is_constant())
+            reason = name + "/Body force varies (its work is not known)";
+          else if (body.has_traction() && !body.traction.is_constant())
+            reason = name + "/Traction varies (its work is not known)";
+        }
+  }
+
+  template <int dim>
+  void
+  EnergyWatch<dim>::check(const GlobalStatistics<dim> &stats,
+                          const unsigned int           step,
+                          const double                 time,
+                          std::ostream                *warnings)
+  {
+    if (!reason.empty() || !std::isfinite(stats.load_work))
+      return;
+    const double energy  = stats.kinetic_energy + stats.strain_energy;
+    const double balance = energy - stats.load_work;
+    scale = std::max({scale, energy, std::abs(stats.load_work)});
+    if (!started)
+      {
+        started         = true;
+        initial_balance = balance;
+        initial_step    = step;
+        return;
+      }
+    const double growth = balance - initial_balance;
+    if (scale <= 0 || growth <= tolerance * scale || warned)
+      return;
+    std::ostringstream s;
+    s.precision(3);
+    s << "at step " << step << " (t = " << time
+      << "): kinetic + strain energy less the work of the loads has grown by "
+      << growth << " since step " << initial_step << ", "
+      << 100. * growth / scale
+      << "% of the largest energy (Output/Energy balance tolerance = "
+      << tolerance << "; kinetic " << stats.kinetic_energy << ", strain "
+      << stats.strain_energy << ", work of the loads " << stats.load_work
+      << "). Energy is being created: by a rate-form model (linear "
+         "elastic) at large strain, which a hyperelastic one (neo-Hookean) "
+         "avoids, or by USL's update at nodes of little mass, which MUSL "
+         "and USF avoid (doc/theory.md, \"Energy balance\").";
+    if (action == Parameters::Output::EnergyCheck::stop)
+      throw RuntimeError(s.str());
+    warned = true;
+    if (warnings)
+      *warnings << "mpm: warning: " << s.str() << std::endl;
+  }
+
+  template class EnergyWatch<1>;
+  template class EnergyWatch<2>;
+  template class EnergyWatch<3>;
+} // namespace mpm
