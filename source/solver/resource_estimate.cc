@@ -28,15 +28,13 @@ namespace mpm
     /// the program, libraries' data and buffers of one rank
     constexpr double bytes_per_rank = 15e6;
 
+    /// the parameters hold one count per direction
     double
-    product(const std::vector<unsigned int> &n, const int dim)
+    product(const std::vector<unsigned int> &n)
     {
       double p = 1;
       for (const unsigned int k : n)
         p *= k;
-      // one number stands for every direction
-      if (n.size() == 1)
-        p = std::pow(double(n[0]), dim);
       return p;
     }
 
@@ -92,12 +90,11 @@ namespace mpm
   {
     ResourceEstimate e;
     const auto      &grid = parameters.grid;
-    const double     refined =
-      std::pow(2., double(dim) * grid.global_refinements);
+    const double refined  = std::pow(2., double(dim) * grid.global_refinements);
     std::ostringstream entries;
     if (grid.type == Parameters::Grid<dim>::Type::hyper_rectangle)
       {
-        e.grid_cells = product(grid.subdivisions, dim);
+        e.grid_cells = product(grid.subdivisions);
         // built from its coarsest grid with the same proportions, then
         // refined (grid/box_mesh.h)
         unsigned int k         = 0;
@@ -114,12 +111,11 @@ namespace mpm
       }
     else
       {
-        e.grid_cells = mesh_file_cells<dim>(grid.mesh_file,
-                                            input_folder,
-                                            "Grid/Mesh file");
+        e.grid_cells =
+          mesh_file_cells<dim>(grid.mesh_file, input_folder, "Grid/Mesh file");
         e.coarse_grid_cells = e.grid_cells;
-        entries << "Grid/Mesh file = " << grid.mesh_file << " ("
-                << e.grid_cells << " cells)";
+        entries << "Grid/Mesh file = " << grid.mesh_file << " (" << e.grid_cells
+                << " cells)";
       }
     if (grid.global_refinements > 0)
       entries << " and Grid/Global refinements = " << grid.global_refinements;
@@ -132,22 +128,23 @@ namespace mpm
     double largest = -1;
     for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
       {
-        const auto       &body = parameters.bodies[b];
-        const std::string where =
-          "Bodies/" + Parameters::body_section(b) + "/";
-        using G = typename Parameters::Body<dim>::Geometry;
+        const auto       &body  = parameters.bodies[b];
+        const std::string where = "Bodies/" + Parameters::body_section(b) + "/";
+        using G                 = typename Parameters::Body<dim>::Geometry;
         double             cells = 0;
         std::ostringstream origin;
         switch (body.geometry)
           {
             case G::box:
             case G::quadrilateral:
-              cells = product(body.subdivisions, dim);
+              cells = product(body.subdivisions);
               origin << where << "Subdivisions = " << list(body.subdivisions);
               break;
             case G::ball:
               // the coarse ball: 2 segments in 1D, 12 cells in 2D, 32 in 3D
-              cells = (dim == 1 ? 2 : dim == 2 ? 12 : 32) *
+              cells = (dim == 1 ? 2 :
+                       dim == 2 ? 12 :
+                                  32) *
                       std::pow(2., double(dim) * body.refinements);
               origin << where << "Refinements = " << body.refinements;
               break;
@@ -171,9 +168,10 @@ namespace mpm
           }
       }
 
-    const BytesPer &per      = bytes_per[dim - 1];
-    const bool      implicit = parameters.time.integrator !=
-                          Parameters::TimeStepping::Integrator::explicit_dynamics;
+    const BytesPer &per = bytes_per[dim - 1];
+    const bool      implicit =
+      parameters.time.integrator !=
+      Parameters::TimeStepping::Integrator::explicit_dynamics;
     // 1D grids are whole on every rank; p4est keeps the coarse grid on
     // every rank and shares the refined cells out
     const double grid_cells_held =
@@ -258,7 +256,7 @@ namespace mpm
                   const bool              limit_is_parameter)
   {
     // deal.II numbers the active cells of a triangulation with 32 bits
-    const double max_cells = std::numeric_limits<unsigned int>::max();
+    const double       max_cells = std::numeric_limits<unsigned int>::max();
     std::ostringstream s;
     s.precision(3);
     if (e.grid_cells > max_cells)
@@ -276,8 +274,7 @@ namespace mpm
           << (limit_is_parameter ? " of Memory limit" :
                                    " of memory available on the machines") +
                std::string(". The grid comes from ")
-          << e.grid_entries << "; the most particles from "
-          << e.largest_body
+          << e.grid_entries << "; the most particles from " << e.largest_body
           << ". Use fewer cells or particles, more machines, or"
           << (limit_is_parameter ? " a larger" : " set") << " Memory limit "
           << "(in GB) if the machines can hold it.";
