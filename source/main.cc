@@ -61,9 +61,8 @@ namespace
       std::filesystem::path(file).parent_path().string(),
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
     const bool   limit_given = parameters.memory_limit > 0;
-    const double limit       = limit_given ?
-                                 parameters.memory_limit * 1e9 :
-                                 mpm::available_memory(MPI_COMM_WORLD);
+    const double limit       = limit_given ? parameters.memory_limit * 1e9 :
+                                             mpm::available_memory(MPI_COMM_WORLD);
     mpm::check_resources(estimate, limit, limit_given);
     // Errors leave the simulator's scope normally (its timer would complain
     // about being destroyed during stack unwinding) and are re-thrown.

@@ -231,8 +231,8 @@ namespace mpm
       // the residual in the preconditioner's norm, whose scale follows the
       // inverse moduli: it is reduced by the same fraction instead, so
       // that the accuracy does not depend on the units.
-      const double  load_norm = load.l2_norm();
-      SolverControl cg_control(solver.max_iterations,
+      const double     load_norm = load.l2_norm();
+      SolverControl    cg_control(solver.max_iterations,
                                solver.tolerance * load_norm);
       ReductionControl minres_control(solver.max_iterations,
                                       0.,
@@ -262,10 +262,10 @@ namespace mpm
           s << "in the linear solve: " << (element.mixed ? "MINRES" : "CG")
             << " did not reach Linear solver/Tolerance = " << solver.tolerance
             << " in " << e.last_step << " iterations (relative residual "
-            << e.last_residual /
-                 std::max(element.mixed ? minres_control.initial_value() :
-                                          load_norm,
-                          1e-300)
+            << e.last_residual / std::max(element.mixed ?
+                                            minres_control.initial_value() :
+                                            load_norm,
+                                          1e-300)
             << "; raise Maximum iterations)";
           throw RuntimeError(s.str());
         }

@@ -79,7 +79,8 @@ namespace mpm
         for (unsigned int d = 0; d < dim; ++d)
           {
             const double u = x[d] - prop[L::X + d];
-            local[n - 1] += (m * f[d] + (area > 0 ? area * f[dim + d] : 0.)) * u;
+            local[n - 1] +=
+              (m * f[d] + (area > 0 ? area * f[dim + d] : 0.)) * u;
           }
       }
     double global[n];

@@ -479,18 +479,18 @@ namespace mpm
     Output::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
-      directory         = prm.get("Directory");
-      interval          = prm.get_double("Interval");
-      write_vtu         = prm.get_bool("Write vtu");
-      write_grid        = prm.get_bool("Write grid");
-      write_csv         = prm.get_bool("Write csv");
-      test_summary      = prm.get("Test summary file");
-      progress_interval = prm.get_double("Progress interval");
+      directory               = prm.get("Directory");
+      interval                = prm.get_double("Interval");
+      write_vtu               = prm.get_bool("Write vtu");
+      write_grid              = prm.get_bool("Write grid");
+      write_csv               = prm.get_bool("Write csv");
+      test_summary            = prm.get("Test summary file");
+      progress_interval       = prm.get_double("Progress interval");
       const std::string check = prm.get("Energy balance check");
-      energy_check     = check == "none" ? EnergyCheck::none :
-                         check == "stop" ? EnergyCheck::stop :
-                                           EnergyCheck::warn;
-      energy_tolerance = prm.get_double("Energy balance tolerance");
+      energy_check            = check == "none" ? EnergyCheck::none :
+                                check == "stop" ? EnergyCheck::stop :
+                                                  EnergyCheck::warn;
+      energy_tolerance        = prm.get_double("Energy balance tolerance");
       prm.leave_subsection();
       if (directory.empty())
         throw InputError("Output/Directory must not be empty");
@@ -728,8 +728,8 @@ namespace mpm
                            "': " + e.what());
         }
       Preamble preamble;
-      preamble.dimension = prm.get_integer("Dimension");
-      preamble.n_bodies  = prm.get_integer("Number of bodies");
+      preamble.dimension        = prm.get_integer("Dimension");
+      preamble.n_bodies         = prm.get_integer("Number of bodies");
       preamble.described_bodies = described_bodies(lines);
       return preamble;
     }
@@ -849,7 +849,7 @@ namespace mpm
                          "' does not fit Dimension = " + std::to_string(dim));
       benchmark    = prm.get("Benchmark");
       memory_limit = prm.get_double("Memory limit");
-      constants = parse_constants(prm.get("Constants"), "Constants");
+      constants    = parse_constants(prm.get("Constants"), "Constants");
 
       grid.parse_parameters(prm);
       time.parse_parameters(prm);

@@ -23,15 +23,15 @@ namespace mpm
     const MPI_Comm                                 comm)
   {
     using namespace dealii;
-    using L                = ParticleLayout<dim>;
-    const unsigned int n   = bodies.size();
+    using L              = ParticleLayout<dim>;
+    const unsigned int n = bodies.size();
     if (n < 2)
       return;
     // every body's mesh with a point locator, and its bounding box
-    std::vector<std::unique_ptr<Triangulation<dim>>>      meshes(n);
-    std::vector<std::unique_ptr<GridTools::Cache<dim>>>   locators(n);
-    std::vector<BoundingBox<dim>>                         boxes(n);
-    const MappingQ1<dim>                                  mapping;
+    std::vector<std::unique_ptr<Triangulation<dim>>>    meshes(n);
+    std::vector<std::unique_ptr<GridTools::Cache<dim>>> locators(n);
+    std::vector<BoundingBox<dim>>                       boxes(n);
+    const MappingQ1<dim>                                mapping;
     for (unsigned int b = 0; b < n; ++b)
       {
         meshes[b] = std::make_unique<Triangulation<dim>>();
@@ -39,9 +39,9 @@ namespace mpm
                          bodies[b].prm,
                          input_folder,
                          "Bodies/" + Parameters::body_section(b));
-        boxes[b]    = GridTools::compute_bounding_box(*meshes[b]);
-        locators[b] = std::make_unique<GridTools::Cache<dim>>(*meshes[b],
-                                                             mapping);
+        boxes[b] = GridTools::compute_bounding_box(*meshes[b]);
+        locators[b] =
+          std::make_unique<GridTools::Cache<dim>>(*meshes[b], mapping);
       }
 
     // inside[j * n + i]: volume of body j's particles inside body i
@@ -75,8 +75,7 @@ namespace mpm
               << Parameters::body_section(j) << " with a volume of "
               << inside[j * n + i] << " ("
               << 100. * inside[j * n + i] / volume[j]
-              << "% of the body) lie inside "
-              << Parameters::body_section(i)
+              << "% of the body) lie inside " << Parameters::body_section(i)
               << ". Overlapping bodies put two masses in one place; move or "
                  "resize one of them (bodies may touch).";
             throw InputError(s.str());

@@ -12,9 +12,9 @@
 #include <mpm/utilities/wall_clock.h>
 
 #include <csignal>
-#include <filesystem>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -346,9 +346,9 @@ namespace mpm
     // fit before it is begun. It takes about what the latest one took,
     // or what its particles and cells need.
     state.particle_handler.update_cached_numbers();
-    const double particle_bytes =
-      8. * state.particle_handler.n_global_particles() *
-      (state.layout.n_properties() + 2 * dim + 2);
+    const double particle_bytes = 8. *
+                                  state.particle_handler.n_global_particles() *
+                                  (state.layout.n_properties() + 2 * dim + 2);
     const double cell_bytes =
       64. * state.background.triangulation().n_global_active_cells();
     on_root<RuntimeError>(comm, prefix, [&]() {

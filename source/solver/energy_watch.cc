@@ -41,7 +41,7 @@ namespace mpm
       return;
     const double energy  = stats.kinetic_energy + stats.strain_energy;
     const double balance = energy - stats.load_work;
-    scale = std::max({scale, energy, std::abs(stats.load_work)});
+    scale                = std::max({scale, energy, std::abs(stats.load_work)});
     if (!started)
       {
         started         = true;

@@ -4,8 +4,8 @@
 
 #include <deal.II/base/utilities.h>
 
-#include <mpm/shape_functions/family_registry.h>
 #include <mpm/particles/body_overlap.h>
+#include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/numbers.h>

@@ -84,9 +84,9 @@ namespace mpm
     state.initialize_nodal_vectors();
     benchmark =
       benchmarks::create_benchmark<dim>(params.benchmark, params.constants);
-    integrator   = create_time_integrator(state);
-    energy_watch = std::make_unique<EnergyWatch<dim>>(params.output,
-                                                      state.bodies);
+    integrator = create_time_integrator(state);
+    energy_watch =
+      std::make_unique<EnergyWatch<dim>>(params.output, state.bodies);
     if (resumed())
       {
         // The state the checkpoint was written in: the fixed step was

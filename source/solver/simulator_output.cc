@@ -151,11 +151,11 @@ namespace mpm
     // disk, say) is collected and reported on all ranks afterwards, so no
     // rank waits for another that has given up.
     FirstProblem problem;
-    auto attempt = [&](const std::string &what, const auto &write) {
+    auto         attempt = [&](const std::string &what, const auto &write) {
       const std::string p = problem_of(write);
       if (!p.empty())
-        problem.record("cannot write " + what + " in '" + out.directory +
-                       "'" + free_space_note(out.directory) + ": " +
+        problem.record("cannot write " + what + " in '" + out.directory + "'" +
+                       free_space_note(out.directory) + ": " +
                        clean_dealii_message(p));
     };
     attempt("statistics.txt", [&]() {

@@ -25,7 +25,7 @@ namespace mpm
   class EnergyWatch
   {
   public:
-    EnergyWatch(const Parameters::Output    &output,
+    EnergyWatch(const Parameters::Output     &output,
                 const std::vector<Body<dim>> &bodies);
 
     /// Why the balance is not watched ("" if it is).
@@ -53,6 +53,6 @@ namespace mpm
     std::string                     reason;
     bool                            started = false, warned = false;
     double                          initial_balance = 0, scale = 0;
-    unsigned int                    initial_step    = 0;
+    unsigned int                    initial_step = 0;
   };
 } // namespace mpm
