@@ -25,10 +25,13 @@ run_mpm() {
 fail() { echo "FAIL: $*"; exit 1; }
 here=$(pwd)
 disk=$here/disk
-cleanup() { cd "$here"; umount "$disk" 2>/dev/null; true; }
+# a mount left by an interrupted run (possibly stacked) is taken down
+unmount_all() { while mountpoint -q "$disk" 2>/dev/null; do umount "$disk" || break; done; }
+cleanup() { cd "$here"; unmount_all; true; }
 trap cleanup EXIT
+trap 'exit 1' INT TERM
 
-umount "$disk" 2>/dev/null
+unmount_all
 rm -rf ref "$disk" && mkdir ref "$disk" || exit 1
 if ! mount -t tmpfs -o size=1m tmpfs "$disk" 2>/dev/null; then
   echo "SKIPPED: cannot mount a tmpfs here (needs root and permission)"
