@@ -1,4 +1,4 @@
-// The assumed-stress filter as a projection (issue 3, first part):
+// The assumed-stress filter as a projection:
 // idempotent, exact on its span (also on distorted cells), commutes with
 // rigid rotations, removes the parasitic shear of one bending cell, and
 // falls back to constant stress on degenerate particle layouts.
