@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Spinning disk (BENCHMARKS.md section 3) for every shape-function family,
-# with and without the assumed-stress filter: the error table at the end
-# time and the seed-style panels (particles coloured by sigma_rr and
-# sigma_rt, one panel per variant).
+# Spinning disk (doc/benchmarks/spinning_disk.md; prm/spinning_disk.prm: a
+# plane-stress disk, a = 1 m, omega = 1 rad/s, in its steady rotating state)
+# for every shape-function family, with and without the assumed-stress filter:
+# the error table at the end time and the seed-style panels (particles coloured
+# by sigma_rr and sigma_rt, one panel per variant).
 # Usage: scripts/spinning_disk_study.sh [OUT]   (default results/spinning_disk)
 # A variant is a family with optional suffixes: +filter (assumed-stress
 # filter), +enriched (the filter with Filter field = enriched), +force (the
@@ -10,31 +11,47 @@
 # APIC), e.g. CPDI+filter+force+APIC.
 # Environment: END (end time, default 6.2), CELLS (grid cells per direction
 # over [-1.25,1.25], default 50: h = 0.05), CFL (default 0.5), VARIANTS
-# (default below), NP (MPI ranks, default 1), MPM (executable), PLOT (the
-# PNG, default doc/figures/spinning_disk_variants.png).
+# (default below), NP (MPI ranks per run, default 1), JOBS (runs at the same
+# time, default 1), REFINEMENTS (refinements of the disk's body mesh,
+# default that of prm/spinning_disk.prm, 4: 12 288 particles; 3 gives
+# 3 072), VTU (true: also write ParaView files, default false), INTERVAL
+# (output interval, default END), MPM (executable), PLOT (the PNG, default
+# doc/figures/spinning_disk_variants.png; PLOT=none skips the picture).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-$root/results/spinning_disk}
 end=${END:-6.2}
 cells=${CELLS:-50}
 np=${NP:-1}
+jobs=${JOBS:-1}
 mpm=${MPM:-$root/build/mpm}
 cfl=${CFL:-0.5}
+vtu=${VTU:-false}
+interval=${INTERVAL:-$end}
+refinements=""
+[ -n "${REFINEMENTS:-}" ] && refinements="set Refinements = $REFINEMENTS"
 plot=${PLOT:-$root/doc/figures/spinning_disk_variants.png}
 variants=${VARIANTS:-"standard standard+filter uGIMP cpGIMP CPDI CPDI+filter CPDI2 CPDI2+filter CPDI+APIC CPDI+filter+APIC"}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# Open MPI binds rank 0 of every mpirun to the same core: runs side by side
+# must not be bound.
+bind=""
+[ "$jobs" -gt 1 ] && bind="--bind-to none"
 mkdir -p "$out"
 table="$out/errors.csv"
-echo "variant,h,cfl,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_change,energy_change,wall_s" > "$table"
-start=$(date +%s)
-for v in $variants; do
-  family=${v%%+*}
-  filter="" transfer=FLIP field=Pian-Sumihara target="written back"
+h=$(awk -v n="$cells" 'BEGIN{print 2.5/n}')
+
+# Runs one variant in $out/<variant>/ and writes its table row to
+# $out/<variant>/row.csv.
+run_variant() {
+  local v=$1
+  local family=${v%%+*}
+  local filter="" transfer=FLIP field=Pian-Sumihara target="written back"
   case "$v" in *+filter*|*+enriched*) filter="set Stress filter = assumed stress" ;; esac
   case "$v" in *+force*) target="force only" ;; esac
   case "$v" in *+enriched*) field=enriched ;; esac
   case "$v" in *+APIC*) transfer=APIC ;; esac
-  dir="$out/$v"
+  local dir="$out/$v"
   rm -rf "$dir"; mkdir -p "$dir"
   cat > "$dir/case.prm" <<PRM
 include $root/prm/spinning_disk.prm
@@ -51,11 +68,12 @@ subsection Time stepping
 end
 subsection Output
   set Directory = $dir/output
-  set Interval = $end
-  set Write vtu = false
+  set Interval = $interval
+  set Write vtu = $vtu
 end
 subsection Bodies
   subsection Body 0
+    $refinements
     subsection Locking remedies
       $filter
       set Filter field = $field
@@ -64,14 +82,15 @@ subsection Bodies
   end
 end
 PRM
+  local t0
   t0=$(date +%s)
-  if ! mpirun -np "$np" "$mpm" "$dir/case.prm" > "$dir/log.txt" 2>&1; then
+  if ! mpirun -np "$np" $bind "$mpm" "$dir/case.prm" > "$dir/log.txt" 2>&1; then
     echo "$v failed: $(grep -m1 'mpm:' "$dir/log.txt")" >&2
-    echo "$v,$(awk -v n="$cells" 'BEGIN{print 2.5/n}'),$cfl,failed,,,,,,$(( $(date +%s) - t0 ))" >> "$table"
-    continue
+    echo "$v,$h,$cfl,failed,,,,,,$(( $(date +%s) - t0 ))" > "$dir/row.csv"
+    return 0
   fi
-  wall=$(( $(date +%s) - t0 ))
-  awk -v v="$v" -v h="$(awk -v n="$cells" 'BEGIN{print 2.5/n}')" -v cfl="$cfl" -v w="$wall" '
+  local wall=$(( $(date +%s) - t0 ))
+  awk -v v="$v" -v h="$h" -v cfl="$cfl" -v w="$wall" '
     NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
     NR == 2 { L0 = $c["angular_momentum_z"]; E0 = $c["total_energy"] }
     { last = $0 }
@@ -80,8 +99,17 @@ PRM
       printf "%s,%s,%s,%s,%.4g,%.4g,%.4g,%.3g,%.3g,%s\n", v, h, cfl, f[c["time"]],
         f[c["sigma_rr_rms_error"]], f[c["sigma_rt_rms"]], f[c["v_r_rms"]],
         f[c["angular_momentum_z"]] / L0 - 1, f[c["total_energy"]] / E0 - 1, w
-    }' "$dir/output/statistics.txt" >> "$table"
-  tail -1 "$table"
-done
+    }' "$dir/output/statistics.txt" > "$dir/row.csv"
+}
+
+start=$(date +%s)
+# at most $jobs runs at a time (xargs -P); each prints its row when it ends
+export -f run_variant
+export root out cells end cfl interval vtu refinements np mpm h bind
+printf '%s\n' $variants |
+  xargs -P "$jobs" -I{} bash -c 'run_variant "$1"; cat "$out/$1/row.csv"' _ {}
+echo "variant,h,cfl,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_change,energy_change,wall_s" > "$table"
+for v in $variants; do cat "$out/$v/row.csv" >> "$table"; done
 echo "wall time: $(( $(date +%s) - start )) s"
-/usr/bin/python3 "$root/scripts/plot_spinning_disk_variants.py" "$out" "$plot" $variants
+[ "$plot" = none ] ||
+  /usr/bin/python3 "$root/scripts/plot_spinning_disk_variants.py" "$out" "$plot" $variants
