@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Axial vibration of a fixed-free bar (BENCHMARKS.md section 9,
-# prm/axial_bar.prm): standard MPM, uGIMP and CPDI on 16 and 32 cells
+# Axial vibration of a fixed-free bar (doc/benchmarks/axial_bar.md,
+# prm/axial_bar.prm; exact standing wave v = v0 cos(omega t) sin(beta x),
+# beta = pi/(2L)): standard MPM, uGIMP and CPDI on 16 and 32 cells
 # (2 particles per cell, dt = 0.2 h/c), 10 s (one period 4L/c of the
 # first mode), output every 0.05 s with particle CSV files. Writes
 # OUT/table.txt (the centre-of-mass velocity error and the RMS velocity

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Self-weight column (BENCHMARKS.md section 5): every variant for
+# Self-weight column (doc/benchmarks/self_weight_column.md;
+# prm/self_weight_column.prm: a laterally confined column, H = 10 m, plane
+# strain, under gravity; exact sigma_yy = -rho g (H - Y)): every variant for
 # nu = 0.3, 0.49, 0.499 and h = 1, 0.5, 0.25, on the aligned grid of the
 # definition and on a distorted grid (scripts/make_distorted_grid.py, nodes
 # moved by up to 0.2 h). Writes OUT/table.txt (the errors at t = 3 s,

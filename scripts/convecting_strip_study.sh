@@ -2,7 +2,7 @@
 # The convecting bar as a 2D strip (prm/convecting_strip.prm): RMS stress
 # error after 2L of travel (and its largest value over the run) for
 # standard MPM, uGIMP and CPDI, each without filter, with the
-# Pian-Sumihara filter and with the enriched filter (doc/theory.md 4.8).
+# Pian-Sumihara filter and with the enriched filter (doc/theory/assumed_stress_filter.md).
 # Usage: scripts/convecting_strip_study.sh [OUT] (default
 # results/convecting-strip). About 1 min.
 set -euo pipefail

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cook's membrane (BENCHMARKS.md section 7; prm/cooks_membrane.prm and
+# Cook's membrane (doc/benchmarks/cooks_membrane.md; prm/cooks_membrane.prm and
 # prm/cooks_membrane_plane_strain.prm): (a) plane stress and (b) plane
 # strain at nu = 0.4999, every variant (standard; assumed-stress filter
 # with the mass and the compliance metric; theta-bar; compliance filter +

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The energy balance of two colliding elastic disks (doc/theory.md,
+# The energy balance of two colliding elastic disks (doc/theory/statistics_and_conservation.md,
 # "Energy balance"): growth of kinetic + strain energy over its initial
 # value, largest and final, for USL, MUSL and USF, linear elastic at
 # velocity components +-0.1 and +-0.5 (c = 1), and neo-Hookean at +-0.5.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Regenerate every result and figure of the locking remedies
-# (doc/locking.md): the cantilever, the self-weight column, the thick
+# Regenerate the results and figures of the locking remedies on the
+# benchmarks (doc/benchmarks/): the cantilever, the self-weight column, the thick
 # cylinder and the convecting bar studies into results/, their figures into doc/figures/.
 # About 15 minutes on the 2-core development machine.
 # Usage: scripts/locking_figures.sh

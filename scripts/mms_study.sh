@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Manufactured-solution convergence study (BENCHMARKS.md section 8,
-# prm/manufactured_solution.prm): for every shape-function family and
-# G = 1e-4 and 0.05, one period on h = 1/8, 1/16, 1/32, 1/64 (2D) or
-# h = 1/4, 1/8 (--3d), dt = 0.2 h/c. Writes
+# Manufactured-solution convergence study
+# (doc/benchmarks/manufactured_solution.md, prm/manufactured_solution.prm:
+# u_i = G sin(pi X_i) sin(c pi t + phi_i) held by its body force): for every
+# shape-function family and G = 1e-4 and 0.05, one period on h = 1/8, 1/16,
+# 1/32, 1/64 (2D) or h = 1/4, 1/8 (--3d), dt = 0.2 h/c. Writes
 #   OUT/errors.csv  dim,family,G,h,steps,u_L2_error,u_max_error,rate_L2,
 #                   rate_max,u_L2_peak,u_max_peak (errors at t = T divided
 #                   by G; rate = log2 of the ratio to the next coarser h;

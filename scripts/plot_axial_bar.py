@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Axial bar (BENCHMARKS.md section 9) from scripts/axial_bar_study.sh:
+"""Axial bar (doc/benchmarks/axial_bar.md) from scripts/axial_bar_study.sh:
 (a) the centre-of-mass velocity over v0 against time, with the exact
 v0 cos(omega t)/(beta L); (b) the mass-weighted RMS velocity error over v0
 against time. Writes OUT/table.txt: for each run the largest

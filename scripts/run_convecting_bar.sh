@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Convecting bar (BENCHMARKS.md section 1): standard MPM, the 1D convection
-# correction of the stress only (Body force correction = false) and the full
-# correction, and the particle-domain families uGIMP, cpGIMP, CPDI and CPDI2
-# (without correction), with 2 and 4 particles per cell, then the table and
-# the plot.
+# Convecting bar (doc/benchmarks/convecting_bar.md; prm/convecting_bar.prm:
+# a 1D bar in quasi-static equilibrium that travels 2 L at v0): standard
+# MPM, the 1D convection correction of the stress only
+# (Body force correction = false) and the full correction, and the
+# particle-domain families uGIMP, cpGIMP, CPDI and CPDI2 (without
+# correction), with 2 and 4 particles per cell, then the table and the plot.
 # Statistics every step, no particle files.
 # Usage: scripts/run_convecting_bar.sh [FOLDER] [FLIP fraction]
 # (default results/convecting-bar, and the prm's PIC, 0).

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 machine: install, build, run the whole
-# test suite with ctest (build about 10 minutes, tests under a minute, on 2 cores).
+# test suite with ctest (build about 15 minutes, tests about 8 minutes, on 2 cores).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/setup.sh"

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# BENCHMARKS.md section 10: particle-updates per second of the time loop and
-# peak memory per particle, on 1 and 2 ranks, as printed by mpm itself.
+# Throughput (doc/performance.md): particle-updates per second of the time
+# loop (particles x steps / wall seconds of the loop) and peak memory per
+# particle, on 1 and 2 ranks, as printed by mpm itself, for the unit square
+# block of prm/throughput_2d.prm (2x2 particles per cell, 100 steps, no
+# output).
 # Usage: scripts/throughput.sh [cells] [variant] [ranks]
 #   cells:   cells inside the block per direction (256 or 512)
 #   variant: standard (default), filter (assumed-stress filter, mass

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The validation suite (BENCHMARKS.md sections 1-9): one command that
-# regenerates every result and figure of doc/locking.md,
-# doc/shape_functions.md and doc/fe_reference.md, then recomputes the
+# The validation suite: one command that regenerates every result and
+# figure of the benchmark pages (doc/benchmarks/, one page each) and of
+# doc/fe_reference.md, then recomputes the
 # benchmark measures of every run that kept particle CSV files
 # (scripts/recompute_measures.py) and writes a summary with the wall time
 # of each part to results/validation/summary.txt.
@@ -10,34 +10,35 @@
 #        QUICK=1 scripts/validation_suite.sh  # a coarse, short smoke run
 #        PARTS="fe axial_bar" scripts/validation_suite.sh   # some parts
 #
-# Parts, with their wall time in the full run of 2026-12-02 (one core,
-# the other busy; doc/validation.md):
+# Parts, with their wall time in a full run (one core, the other busy;
+# doc/validation.md):
 #   fe              mpm-fe on prm/fe_*.prm (FE references)          80 s
-#   cantilever      scripts/cantilever_study.sh + plot (section 2)  1.2 min
-#   column          scripts/column_study.sh + plot (section 5)      3.7 min
+#   cantilever      scripts/cantilever_study.sh + plot              1.2 min
+#   column          scripts/column_study.sh + plot                  3.7 min
 #   thick_cylinder  scripts/thick_cylinder_study.sh + plot          4.5 min
 #   convecting_bar  scripts/run_convecting_bar.sh and
-#                   scripts/convecting_strip_study.sh (section 1)   18 s
+#                   scripts/convecting_strip_study.sh               18 s
 #   mms             scripts/mms_study.sh 2D and 3D, every family,
-#                   + scripts/plot_mms.py (section 8)               11 min
+#                   + scripts/plot_mms.py                           11 min
 #   spinning_disk   scripts/spinning_disk_study.sh with FLIP and the
-#                   APIC table at CFL 0.1 (5 runs) (section 3)      26 min
-#   axial_bar       scripts/axial_bar_study.sh (section 9)          7 s
-#   cooks_membrane  scripts/cooks_membrane_study.sh + plot (section 7)
+#                   APIC table at CFL 0.1 (5 runs)                  26 min
+#   axial_bar       scripts/axial_bar_study.sh                      7 s
+#   cooks_membrane  scripts/cooks_membrane_study.sh + plot
 #                   (a) 21 runs at h = 4, 2, 1; (b) 14 runs at h = 4
 #                   and 2 and 3 at h = 1                           20 min
-#   water_column    scripts/water_column_study.sh + plot (section 6) 1.8 min
+#   water_column    scripts/water_column_study.sh + plot            1.8 min
 #   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static,
-#                   standard MPM and CPDI (doc/implicit.md)         9 min
+#                   standard MPM and CPDI (doc/benchmarks/strip_footing.md)  9 min
 #   thick_cylinder_implicit  scripts/thick_cylinder_implicit.sh + plot,
-#                   quasi-static (doc/implicit.md)                  35 s
+#                   quasi-static (doc/benchmarks/thick_cylinder.md)        35 s
 #   column_implicit scripts/column_implicit_study.sh + plot,
-#                   quasi-static, every family (doc/implicit.md)    1 min
+#                   quasi-static, every family
+#                   (doc/benchmarks/self_weight_column.md)          1 min
 #   cantilever_newmark scripts/cantilever_newmark_study.sh + plot,
-#                   Newmark with the filter (doc/implicit.md)       1 min
+#                   Newmark with the filter (doc/benchmarks/cantilever.md) 1 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
-# Full suite: 71 minutes. QUICK=1 (coarse grids, short runs, few
+# Full suite: about 85 minutes. QUICK=1 (coarse grids, short runs, few
 # variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.
@@ -201,7 +202,7 @@ part_spinning_disk() {
       "$root/scripts/spinning_disk_study.sh" "$res/spinning_disk"
   else
     # FLIP table and figure, then the APIC table at CFL 0.1
-    # (doc/shape_functions.md, spinning disk)
+    # (doc/benchmarks/spinning_disk.md)
     PLOT="$figs/spinning_disk_variants.png" \
       "$root/scripts/spinning_disk_study.sh" "$res/spinning_disk" &&
       CFL=0.1 VARIANTS="CPDI+APIC CPDI+enriched+APIC CPDI+filter+APIC uGIMP+APIC" \

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Water column collapse (BENCHMARKS.md section 6): compare runs of
+"""Water column collapse (doc/benchmarks/water_column.md): compare runs of
 prm/water_column.prm with Martin & Moyce (1952).
 
 For each run folder (its statistics.txt, columns of Benchmark = water
@@ -41,7 +41,8 @@ from recompute_measures import Run, box_grid, cell_averages, read_prm, water_col
 
 A = 0.05715
 RHO, G = 1000.0, 9.81
-# Martin & Moyce 1952, BENCHMARKS.md section 6
+# Martin & Moyce 1952 (a = 2.25 in = 0.05715 m, height 2a): surge front
+# Z = x/a at T = t sqrt(2g/a), column height H = h/(2a) at tau = t sqrt(g/a)
 T_DATA = np.array([0.41, 0.84, 1.19, 1.43, 1.63, 1.83, 1.98, 2.20, 2.32,
                    2.51, 2.65, 2.83, 2.98, 3.11, 3.33])
 Z_DATA = np.array([1.11, 1.22, 1.44, 1.67, 1.89, 2.11, 2.33, 2.56, 2.78,

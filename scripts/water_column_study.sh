@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Water column collapse (BENCHMARKS.md section 6, prm/water_column.prm):
+# Water column collapse (doc/benchmarks/water_column.md,
+# prm/water_column.prm; the experiment of Martin & Moyce 1952):
 # runs the case with standard MPM and with the cell and node theta-bar
 # (Volumetric smoothing = cell, node), one after the other on one core, keeps
 # each run's output in OUT/<variant>/ and its screen output in
@@ -15,14 +16,14 @@
 # With "fine" instead it runs the node theta-bar on h = a/80 (16 minutes
 # of CPU on one core) and h = a/160 (94 minutes on 2 ranks on a machine
 # shared with builds), to t = 0.19 s, for the front's grid convergence
-# (doc/water_column.md); its table goes to OUT/table-fine.md.
+# (doc/benchmarks/water_column.md); its table goes to OUT/table-fine.md.
 # Variants: standard, theta-bar (Volumetric smoothing = cell) and
 # theta-bar-node (= node), each with a suffix _h10, _h40, _h80 or _h160
 # for another grid; VARIANTS="..." runs a subset; CFL=... another CFL
 # number than the parameter file's 0.5. NP=2 runs every variant
 # on 2 MPI ranks (the _h160 ones always run on 2). NEWMARK=<step> runs
-# every variant by Integrator = Newmark at that step instead (doc/implicit.md,
-# section 5: VARIANTS=theta-bar NEWMARK=0.001).
+# every variant by Integrator = Newmark at that step instead (doc/benchmarks/water_column.md:
+# VARIANTS=theta-bar NEWMARK=0.001).
 # Usage: scripts/water_column_study.sh [OUT] [grid|fine]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

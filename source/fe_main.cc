@@ -26,8 +26,11 @@ namespace
     "\n"
     "Options:\n"
     "  -h, --help                 this text\n"
-    "  --print-parameters [DIM]   every parameter with its default and\n"
-    "                             documentation (DIM = 2 or 3; default 2)\n"
+    "  --print-parameters [DIM] [FORMAT]\n"
+    "                             every parameter with its default and\n"
+    "                             documentation (DIM = 2 or 3; default 2),\n"
+    "                             in parameter-file syntax (FORMAT = prm,\n"
+    "                             the default) or as JSON (FORMAT = json)\n"
     "\n"
     "Documentation: doc/fe_reference.md.\n";
 
@@ -79,12 +82,12 @@ namespace
 
   template <int dim>
   void
-  print_parameters()
+  print_parameters(const dealii::ParameterHandler::OutputStyle style)
   {
     dealii::ParameterHandler prm;
     mpm::fe_reference::AllParameters<dim>::declare_parameters(prm);
     prm.set("Dimension", std::to_string(dim));
-    prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+    prm.print_parameters(std::cout, style);
   }
 } // namespace
 
@@ -108,10 +111,23 @@ main(int argc, char **argv)
         }
       else if (a == "--print-parameters")
         {
-          if (i + 1 < argc && std::string(argv[i + 1]) == "3")
-            print_parameters<3>();
+          const std::string d = (i + 1 < argc) ? argv[i + 1] : "2";
+          const std::string f = (i + 2 < argc) ? argv[i + 2] : "prm";
+          if (f != "prm" && f != "json")
+            {
+              std::cerr << "mpm-fe: --print-parameters: unknown format '" << f
+                        << "' (prm or json)\n";
+              return 1;
+            }
+          const auto style =
+            f == "json" ? dealii::ParameterHandler::OutputStyle(
+                            dealii::ParameterHandler::JSON |
+                            dealii::ParameterHandler::KeepDeclarationOrder) :
+                          dealii::ParameterHandler::PRM;
+          if (d == "3")
+            print_parameters<3>(style);
           else
-            print_parameters<2>();
+            print_parameters<2>(style);
           return 0;
         }
       else if (!a.empty() && a[0] == '-')

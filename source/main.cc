@@ -29,11 +29,15 @@ namespace
     "  --resume FILE.prm          continue from the latest checkpoint in\n"
     "                             the output directory (sets Checkpointing/\n"
     "                             Resume computation = true)\n"
-    "  --print-parameters [DIM]   print every parameter with its default\n"
+    "  --print-parameters [DIM] [FORMAT]\n"
+    "                             print every parameter with its default\n"
     "                             and documentation (DIM = 1, 2 or 3;\n"
     "                             default 2), in parameter-file syntax\n"
+    "                             (FORMAT = prm, the default) or as JSON\n"
+    "                             (FORMAT = json)\n"
     "\n"
-    "Documentation: doc/parameters.md (every subsection), doc/theory.md.\n";
+    "Documentation: the manual (scripts/build_manual.sh builds it from doc/;\n"
+    "start at doc/index.md); doc/parameter_file.md for the file format.\n";
 
   template <int dim>
   void
@@ -98,12 +102,12 @@ namespace
 
   template <int dim>
   void
-  print_parameters()
+  print_parameters(const dealii::ParameterHandler::OutputStyle style)
   {
     dealii::ParameterHandler prm;
     mpm::Parameters::AllParameters<dim>::declare_parameters(prm, 1);
     prm.set("Dimension", std::to_string(dim));
-    prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+    prm.print_parameters(std::cout, style);
   }
 } // namespace
 
@@ -129,14 +133,27 @@ main(int argc, char **argv)
       else if (a == "--print-parameters")
         {
           const std::string d = (i + 1 < argc) ? argv[i + 1] : "2";
+          const std::string f = (i + 2 < argc) ? argv[i + 2] : "prm";
+          if (f != "prm" && f != "json")
+            {
+              if (root)
+                std::cerr << "mpm: --print-parameters: unknown format '" << f
+                          << "' (prm or json)\n";
+              return 1;
+            }
+          const auto style =
+            f == "json" ? dealii::ParameterHandler::OutputStyle(
+                            dealii::ParameterHandler::JSON |
+                            dealii::ParameterHandler::KeepDeclarationOrder) :
+                          dealii::ParameterHandler::PRM;
           if (root)
             {
               if (d == "1")
-                print_parameters<1>();
+                print_parameters<1>(style);
               else if (d == "3")
-                print_parameters<3>();
+                print_parameters<3>(style);
               else
-                print_parameters<2>();
+                print_parameters<2>(style);
             }
           return 0;
         }

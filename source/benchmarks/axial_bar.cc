@@ -16,8 +16,8 @@ namespace mpm
     {
       const BenchmarkDeclaration declaration{
         "axial bar",
-        "axial vibration of a fixed-free elastic bar (BENCHMARKS.md section "
-        "9)",
+        "axial vibration of a fixed-free elastic bar in its first mode, "
+        "against the exact standing wave",
         {required_constant("L", "length of the bar [m]"),
          required_constant("E", "Young's modulus [Pa]"),
          required_constant("rho", "density [kg/m^3]"),
@@ -26,8 +26,8 @@ namespace mpm
         {"v_cm", "v_cm_exact", "v_rms_error"}};
 
       /**
-       * BENCHMARKS.md section 9: fixed-free bar of length L (fixed at
-       * X = 0 of the bar), modulus E, density rho, initial velocity
+       * Axial bar (doc/benchmarks/axial_bar.md): fixed-free bar of length L
+       * (fixed at X = 0 of the bar), modulus E, density rho, initial velocity
        * v0 sin(beta X). Exact: v = v0 cos(omega t) sin(beta X),
        * beta = pi/(2L), omega = beta c. Columns: centre-of-mass velocity,
        * its exact value v0 cos(omega t)/(beta L), and the mass-weighted

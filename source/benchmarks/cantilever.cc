@@ -14,15 +14,16 @@ namespace mpm
     {
       const BenchmarkDeclaration declaration{
         "cantilever",
-        "vibrating cantilever clamped at x = 0 (BENCHMARKS.md section 2)",
+        "vibrating cantilever clamped at x = 0, started in its first "
+        "bending mode; the tip deflection gives the period",
         {required_constant("L", "length of the beam [m]"),
          required_constant("H", "depth of the beam [m]")},
         {"tip_displacement_y"}};
 
       /**
-       * BENCHMARKS.md section 2: vibrating cantilever of length L and depth
-       * H, clamped at x = 0. Column: the vertical displacement of the tip,
-       * the mass-weighted mean of y - Y over the particles with
+       * Vibrating cantilever (doc/benchmarks/cantilever.md) of length L
+       * and depth H, clamped at x = 0. Column: the vertical displacement of
+       * the tip, the mass-weighted mean of y - Y over the particles with
        * X > L - H/2. scripts/beam_period.py takes the period from it (mean
        * interval between zero crossings of the same sign).
        */

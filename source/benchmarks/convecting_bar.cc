@@ -16,8 +16,8 @@ namespace mpm
     {
       const BenchmarkDeclaration declaration{
         "convecting bar",
-        "a stressed bar in quasi-static equilibrium convected at v0 "
-        "(BENCHMARKS.md section 1)",
+        "a stressed bar in quasi-static equilibrium with the body force "
+        "b0 cos(pi (X - x0)/L) per unit length, convected at v0",
         {required_constant("L", "length of the bar [m]"),
          required_constant("A", "cross-section [m^2]"),
          required_constant("b0", "body-force amplitude per unit length [N/m]"),
@@ -26,13 +26,13 @@ namespace mpm
         {"sigma_rms_error", "v_rms_error"}};
 
       /**
-       * BENCHMARKS.md section 1: a bar of length L and cross-section A in
-       * quasi-static equilibrium with the body force b0 cos(pi xi) per unit
-       * length, xi = (X - x0)/L, convected at v0. Exact: sigma_xx =
-       * -sigma0 sin(pi xi), sigma0 = b0 L/(pi A), and v = v0. Columns: the
-       * mass-weighted RMS of (sigma_xx - exact)/sigma0 and of (v_x - v0)/v0
-       * (in m/s if v0 = 0); x components, so a 2D strip is measured the
-       * same way.
+       * Convecting bar (doc/benchmarks/convecting_bar.md): a bar of length L
+       * and cross-section A in quasi-static equilibrium with the body force
+       * b0 cos(pi xi) per unit length, xi = (X - x0)/L, convected at v0.
+       * Exact: sigma_xx = -sigma0 sin(pi xi), sigma0 = b0 L/(pi A), and
+       * v = v0. Columns: the mass-weighted RMS of (sigma_xx - exact)/sigma0
+       * and of (v_x - v0)/v0 (in m/s if v0 = 0); x components, so a 2D strip
+       * is measured the same way.
        */
       template <int dim>
       class ConvectingBar : public Benchmark<dim>

@@ -20,8 +20,9 @@ namespace mpm
     {
       const BenchmarkDeclaration declaration{
         "cooks membrane",
-        "Cook's membrane under a shear load, u_y against the FE reference "
-        "(BENCHMARKS.md section 7)",
+        "Cook's membrane, the tapered panel (0,0), (48,44), (48,60), "
+        "(0,44) clamped at x = 0 under a vertical shear load F on its right "
+        "edge; u_y against the FE reference",
         {nonzero_constant("F",
                           "total load on the right edge [N]",
                           "the ratios are divided by it"),

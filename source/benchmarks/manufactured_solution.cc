@@ -19,7 +19,8 @@ namespace mpm
       const BenchmarkDeclaration declaration{
         "manufactured solution",
         "large-deformation motion of a neo-Hookean unit square or cube held "
-        "by its body force (BENCHMARKS.md section 8)",
+        "by its body force, u_i = G sin(pi X_i) sin(c pi t + phi_i) "
+        "(Wallstedt & Guilkey 2008)",
         {positive_constant("G",
                            "displacement amplitude [m]",
                            "errors are divided by it"),
@@ -91,9 +92,9 @@ namespace mpm
     ManufacturedSolution<dim>::body_force(const Point<dim> &X,
                                           const double      time) const
     {
-      // doc/theory.md 4.12: F = diag(F_d), F_d = 1 + G pi cos(pi X_d) s_d,
-      // b_d = k sin(pi X_d) s_d ((1 - 2 nu ln J) / F_d^2 - (1 - 4 nu^2)),
-      // k = G pi^2 E / (2 rho (1 + nu)(1 - 2 nu)).
+      // doc/benchmarks/manufactured_solution.md: F = diag(F_d), F_d = 1 + G pi
+      // cos(pi X_d) s_d, b_d = k sin(pi X_d) s_d ((1 - 2 nu ln J) / F_d^2 - (1
+      // - 4 nu^2)), k = G pi^2 E / (2 rho (1 + nu)(1 - 2 nu)).
       double F[dim], log_J = 0;
       for (unsigned int d = 0; d < dim; ++d)
         {

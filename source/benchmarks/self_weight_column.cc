@@ -18,8 +18,8 @@ namespace mpm
     {
       const BenchmarkDeclaration declaration{
         "self-weight column",
-        "laterally confined column under gravity, plane strain "
-        "(BENCHMARKS.md section 5)",
+        "laterally confined column under gravity, plane strain, against "
+        "its exact static state sigma_yy = -rho g (H - Y)",
         {required_constant("H", "height of the column [m]"),
          required_constant("rho", "density [kg/m^3]"),
          required_constant("g", "gravity [m/s^2]"),
@@ -27,11 +27,11 @@ namespace mpm
         {"sigma_yy_error", "pressure_error", "checkerboard"}};
 
       /**
-       * BENCHMARKS.md section 5: laterally confined column of height H
-       * under gravity g, plane strain, base at y = 0. Exact static state:
-       * sigma_yy = -rho g (H - Y), sigma_xx = nu/(1-nu) sigma_yy,
-       * sigma_zz = nu (sigma_xx + sigma_yy), with Y the material
-       * coordinate. Columns, all divided by rho g H:
+       * Self-weight column (doc/benchmarks/self_weight_column.md): laterally
+       * confined column of height H under gravity g, plane strain, base at
+       * y = 0. Exact static state: sigma_yy = -rho g (H - Y),
+       * sigma_xx = nu/(1-nu) sigma_yy, sigma_zz = nu (sigma_xx + sigma_yy),
+       * with Y the material coordinate. Columns, all divided by rho g H:
        * - sigma_yy_error: sum_p |sigma_yy - exact| V_p / sum_p V_p
        *   (Coombs et al. 2018);
        * - pressure_error: the same for p = -tr(sigma)/3;

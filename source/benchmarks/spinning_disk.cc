@@ -16,8 +16,9 @@ namespace mpm
     {
       const BenchmarkDeclaration declaration{
         "spinning disk",
-        "plane-stress disk spinning about the origin in its steady state "
-        "(BENCHMARKS.md section 3)",
+        "plane-stress disk of radius a spinning at omega about the origin "
+        "in its steady state, sigma_rr and sigma_tt fixed in polar "
+        "components",
         {required_constant("a", "radius of the disk [m]"),
          required_constant("omega", "angular velocity [1/s]"),
          required_constant("nu", "Poisson's ratio"),
@@ -25,9 +26,9 @@ namespace mpm
         {"sigma_rr_rms_error", "sigma_rt_rms", "v_r_rms"}};
 
       /**
-       * BENCHMARKS.md section 3: a plane-stress disk of radius a spinning
-       * at omega about the origin in its steady state. Columns:
-       * mass-weighted RMS of (sigma_rr - exact)/sigma0, RMS
+       * Spinning disk (doc/benchmarks/spinning_disk.md): a plane-stress disk of
+       * radius a spinning at omega about the origin in its steady state.
+       * Columns: mass-weighted RMS of (sigma_rr - exact)/sigma0, RMS
        * sigma_rt/sigma0 and RMS radial velocity/(omega a), with
        * sigma0 = rho omega^2 (3+nu) a^2/8 and polar components taken at
        * the particle's current position.

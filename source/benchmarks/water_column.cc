@@ -18,7 +18,8 @@ namespace mpm
       const BenchmarkDeclaration declaration{
         "water column",
         "collapse of a water column of width a and height 2a against the "
-        "wall x = 0 (BENCHMARKS.md section 6)",
+        "wall x = 0, released under gravity (the dam break of Martin & "
+        "Moyce 1952)",
         {required_constant("a", "width of the column [m]"),
          required_constant("g", "gravity [m/s^2]"),
          required_constant("rho", "density [kg/m^3]"),
@@ -36,10 +37,10 @@ namespace mpm
          "max_speed"}};
 
       /**
-       * BENCHMARKS.md section 6: collapse of a water column of width a and
-       * height 2a standing on the floor y = 0 against the wall x = 0. With
-       * s_p = V_p^(1/dim) the side of a square (cube) of the particle's
-       * current volume, columns:
+       * Water column (doc/benchmarks/water_column.md): collapse of a water
+       * column of width a and height 2a standing on the floor y = 0 against the
+       * wall x = 0. With s_p = V_p^(1/dim) the side of a square (cube) of the
+       * particle's current volume, columns:
        * - x_front: max_p (x_p + s_p/2), the surge front, the right edge of
        *   the particle furthest from the wall (the current volume rather
        *   than F times the domain vectors: a fluid's F is sheared without

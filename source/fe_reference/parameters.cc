@@ -5,6 +5,7 @@
 #include <mpm/fe_reference/parameters.h>
 #include <mpm/grid/quadrilateral_mesh.h>
 #include <mpm/materials/elasticity.h>
+#include <mpm/materials/material.h>
 #include <mpm/parameters/parsing.h>
 #include <mpm/utilities/expression.h>
 #include <mpm/utilities/input_error.h>
@@ -55,22 +56,26 @@ namespace mpm
         "the Corners, boundary ids as for the box in the corners' own "
         "directions (2D: 0 the edge from corner 3 to corner 0, 1 from corner "
         "1 to corner 2, 2 from corner 0 to corner 1, 3 from corner 2 to "
-        "corner 3). mesh file: a Gmsh or UCD file with its boundary ids.");
+        "corner 3). mesh file: a Gmsh or UCD file with its boundary ids. "
+        "The Boundary conditions refer to these ids.");
       prm.declare_entry("Lower corner",
                         Parameters::default_point(dim, 0.),
                         Patterns::List(Patterns::Double(), dim, dim),
-                        "Box: lower corner.");
+                        "Box: lower corner (Type = box).");
       prm.declare_entry("Upper corner",
                         Parameters::default_point(dim, 1.),
                         Patterns::List(Patterns::Double(), dim, dim),
-                        "Box: upper corner.");
+                        "Box: upper corner (Type = box); must exceed Lower "
+                        "corner in every direction.");
       prm.declare_entry("Corners",
                         "",
                         Patterns::Anything(),
-                        "Quadrilateral: the 2^dim corners separated by ';', "
+                        "Quadrilateral (required there, refused for the "
+                        "other types): the 2^dim corners separated by ';', "
                         "counter-clockwise in 2D (Cook's membrane: 0,0; "
                         "48,44; 48,60; 0,44); in 3D the bottom face "
-                        "counter-clockwise, then the top face.");
+                        "counter-clockwise, then the top face. Corners that "
+                        "give an inverted or degenerate cell are refused.");
       prm.declare_entry("Subdivisions",
                         "1",
                         Patterns::List(Patterns::Integer(1), 1, dim),
@@ -79,8 +84,11 @@ namespace mpm
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::FileName(),
-                        "Mesh file: relative to the parameter file's folder "
-                        "or absolute.");
+                        "Mesh file (required there): Gmsh .msh or UCD "
+                        ".inp/.ucd. A relative path is looked up first in "
+                        "the folder of the parameter file, then in the "
+                        "working directory. Inverted or degenerate cells are "
+                        "refused.");
       prm.leave_subsection();
     }
 
@@ -193,37 +201,51 @@ namespace mpm
       prm.declare_entry("Clamped boundary ids",
                         "",
                         ids,
-                        "All displacement components zero.");
+                        "Boundary ids (of Geometry) where every "
+                        "displacement component is zero. Each id may appear "
+                        "in one of the four id lists only, and must occur "
+                        "on the mesh. Boundaries not listed anywhere are "
+                        "free. Statics refuses conditions that leave a "
+                        "rigid-body motion free.");
       prm.declare_entry("Slip boundary ids",
                         "",
                         ids,
-                        "Normal displacement zero, tangential free.");
+                        "Boundary ids where the normal displacement is zero "
+                        "and the tangential free (also on inclined and "
+                        "curved boundaries).");
       prm.declare_entry("Prescribed displacement boundary ids",
                         "",
                         ids,
-                        "All components given by Prescribed displacement.");
+                        "Boundary ids where every displacement component "
+                        "is given by Prescribed displacement. Refused by "
+                        "the modal analysis.");
       prm.declare_entry("Prescribed displacement",
                         Parameters::default_expression(dim),
                         Patterns::Anything(),
-                        "dim expressions of " + xyz +
-                          " and the Constants, separated by ';'.");
+                        "The displacement on the Prescribed displacement "
+                        "boundary ids: dim expressions of " +
+                          xyz + " and the Constants, separated by ';'.");
       prm.declare_entry("Traction boundary ids",
                         "",
                         ids,
                         "Boundary ids carrying the Traction. Boundaries "
-                        "not listed anywhere are free.");
+                        "not listed anywhere are free. Refused by the modal "
+                        "analysis.");
       prm.declare_entry("Traction",
                         Parameters::default_expression(dim),
                         Patterns::Anything(),
                         "Surface traction [force/area; in 2D force/length "
-                        "per unit thickness], dim expressions of " +
-                          xyz + " separated by ';'.");
+                        "per unit thickness] on the Traction boundary ids, "
+                        "dim expressions of " +
+                          xyz + " and the Constants, separated by ';'.");
       prm.declare_entry("Body force",
                         Parameters::default_expression(dim),
                         Patterns::Anything(),
                         "Body force per unit mass (gravity) [m/s^2], dim "
                         "expressions of " +
-                          xyz + " separated by ';'.");
+                          xyz +
+                          " and the Constants, separated by ';'. Multiplied "
+                          "by Material/Density.");
       prm.leave_subsection();
     }
 
@@ -270,18 +292,21 @@ namespace mpm
         Patterns::Selection("displacement|mixed"),
         "displacement: Q_p elements for u. mixed: Taylor-Hood Q_p/Q_(p-1) "
         "for u and the pressure p = -lambda div u (no volumetric locking; "
-        "nu up to 0.5).");
+        "0 < nu <= 0.5; Polynomial degree at least 2). The displacement "
+        "formulation needs nu < 0.5, and so does the modal analysis.");
       prm.declare_entry("Polynomial degree",
                         "2",
                         Patterns::Integer(1, 8),
-                        "p of the displacement elements (mixed: p >= 2).");
+                        "p of the displacement elements Q_p (mixed: p >= 2, "
+                        "the pressure is Q_(p-1)); curved boundaries of a "
+                        "mesh file are followed by a mapping of degree p.");
       prm.declare_entry("Refinements",
                         "0, 1, 2",
                         Patterns::List(Patterns::Integer(0, 12), 1),
                         "The refinement study: one run per entry, each "
                         "with that many global refinements of the coarse "
-                        "mesh, in increasing order. The last run gives the "
-                        "reference value.");
+                        "mesh; the list must increase. The last run gives "
+                        "the reference value.");
       prm.leave_subsection();
     }
 
@@ -324,7 +349,8 @@ namespace mpm
         "system in Trilinos matrices, solved by CG (displacement "
         "formulation) or MINRES (mixed formulation) preconditioned by ML "
         "algebraic multigrid with the rigid-body modes as near-null space; "
-        "statics only. Run it under mpirun for large 3D references.");
+        "statics only. Run it under mpirun for large 3D references; "
+        "direct under mpirun with more than one process is refused.");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         Patterns::Double(1e-16, 1e-2),
@@ -360,27 +386,33 @@ namespace mpm
       prm.declare_entry("Type",
                         "static",
                         Patterns::Selection("static|modal"),
-                        "static: K u = f, the displacement at the Point of "
+                        "static: K u = f, the displacement at the Points of "
                         "interest. modal: the lowest eigenpairs of "
-                        "K u = omega^2 M u (consistent mass); near-zero "
-                        "(rigid-body) modes are skipped and reported.");
+                        "K u = omega^2 M u (consistent mass, Lanczos with "
+                        "shift-and-invert); near-zero (rigid-body) modes "
+                        "are skipped and reported. modal refuses the mixed "
+                        "formulation, Linear solver/Method = AMG, tractions "
+                        "and prescribed displacements.");
       prm.declare_entry("Number of modes",
                         "3",
                         Patterns::Integer(1, 50),
                         "modal: eigenfrequencies reported (not counting "
-                        "rigid-body modes).");
+                        "rigid-body modes). The quantity of interest is the "
+                        "first period 2 pi/omega_1.");
       prm.declare_entry("Points of interest",
                         Parameters::default_point(dim, 0.),
                         Patterns::Anything(),
                         "static: points where the displacement is "
                         "evaluated, separated by ';' (e.g. '48, 52; 48, "
-                        "60'). The first one carries the quantity of "
-                        "interest.");
+                        "60'); each must lie in the body. The first one "
+                        "carries the quantity of interest.");
       prm.declare_entry("Component of interest",
                         std::to_string(dim - 1),
                         Patterns::Integer(0, dim - 1),
-                        "static: the displacement component whose change "
-                        "over the refinements is reported (0 = x).");
+                        "static: the displacement component at the first "
+                        "Point of interest that is the quantity of interest, "
+                        "whose change over the refinements is reported "
+                        "(0 = x).");
       prm.declare_entry("Reference value",
                         "0",
                         NumberOrConstant(),
@@ -393,7 +425,8 @@ namespace mpm
                         Patterns::Double(0, 1),
                         "If positive, the relative change of the quantity "
                         "of interest over the last two refinements must be "
-                        "below this, or mpm-fe warns (exit status stays 0).");
+                        "below this, or mpm-fe warns (exit status stays 0). "
+                        "0: no check.");
       prm.leave_subsection();
     }
 
@@ -425,8 +458,10 @@ namespace mpm
       prm.declare_entry("Directory",
                         "output-fe",
                         Patterns::DirectoryName(),
-                        "Folder for refinement_study.csv and the vtu "
-                        "files, relative to the working directory.");
+                        "Folder for refinement_study.csv and the vtu file "
+                        "(solution.vtu or modes.vtu), relative to the "
+                        "working directory; written only after every run "
+                        "succeeded.");
       prm.declare_entry("Write vtu",
                         "true",
                         Patterns::Bool(),
@@ -435,8 +470,9 @@ namespace mpm
       prm.declare_entry("Test summary file",
                         "",
                         Patterns::FileName(),
-                        "If set, the refinement table with few digits for "
-                        "regression tests.");
+                        "If set, the refinement table with 6 significant "
+                        "digits is written to this file (relative to the "
+                        "working directory), for regression tests.");
       prm.leave_subsection();
     }
 
@@ -460,22 +496,54 @@ namespace mpm
       prm.declare_entry("Dimension",
                         "2",
                         Patterns::Integer(2, 3),
-                        "Space dimension: 2 or 3.");
+                        "Space dimension of the model: 2 or 3.");
       prm.declare_entry("Kinematic assumption",
                         "default",
                         Patterns::Selection("default|three dimensional|"
                                             "plane strain|plane stress"),
+                        "How the model is embedded in 3D: three dimensional "
+                        "(3D only), plane strain or plane stress (2D only); "
+                        "other combinations are refused. "
                         "default: three dimensional in 3D, plane strain in "
                         "2D. Plane stress uses lambda* = 2 lambda mu / "
                         "(lambda + 2 mu).");
       prm.declare_entry("Constants",
                         "",
                         Patterns::Anything(),
-                        "Named constants for all numbers and expressions, "
-                        "e.g. 'L=1, H=0.1'.");
+                        "Named constants, comma-separated name=value pairs "
+                        "with plain numbers as values, e.g. 'L=1, H=0.1', "
+                        "for the expressions, the Material numbers and "
+                        "Reference value. A constant named x, y, z or t is "
+                        "refused.");
       Geometry<dim>::declare_parameters(prm);
+      // The Material subsection of mpm, so that a linear elastic body's
+      // section can be copied, but with the one model mpm-fe solves.
       prm.enter_subsection("Material");
-      materials::declare_material_parameters(prm);
+      std::string models;
+      for (const auto &entry : materials::registered_materials())
+        models += (models.empty() ? "" : "|") + entry.name;
+      prm.declare_entry("Model",
+                        "linear elastic",
+                        Patterns::Selection(models),
+                        "mpm-fe solves small-strain linear elasticity: "
+                        "linear elastic is the only model it accepts (any "
+                        "other model of mpm is an input error). The "
+                        "subsection is that of mpm's parameter file, so a "
+                        "linear elastic body's Material can be copied.");
+      prm.declare_entry("Density",
+                        "1000",
+                        NumberOrConstant(),
+                        "Mass density rho [kg/m^3], positive: the mass "
+                        "matrix of the modal analysis and the weight of the "
+                        "Boundary conditions/Body force.");
+      prm.enter_subsection(materials::subsection_name("linear elastic"));
+      materials::elasticity::declare_parameters(prm);
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        NumberOrConstant(),
+                        "Poisson's ratio nu [-], in [0, 0.5); in (0, 0.5] "
+                        "with Discretisation/Formulation = mixed.");
+      prm.leave_subsection();
       prm.leave_subsection();
       BoundaryConditions::declare_parameters(prm, dim);
       Discretisation::declare_parameters(prm);

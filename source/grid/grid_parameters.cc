@@ -19,31 +19,46 @@ namespace mpm
       prm.declare_entry("Type",
                         "hyper rectangle",
                         Patterns::Selection("hyper rectangle|mesh file"),
-                        "Background grid: a subdivided box, or a Gmsh (.msh) "
-                        "or UCD (.inp/.ucd) file. Box boundary ids are "
-                        "0/1 (x min/max), 2/3 (y), 4/5 (z).");
+                        "The background grid of Q1 cells on which the "
+                        "equations of motion are solved: a subdivided box "
+                        "(hyper rectangle), or a Gmsh (.msh) or UCD "
+                        "(.inp/.ucd) file (mesh file). Box boundary ids are "
+                        "0/1 (x min/max), 2/3 (y), 4/5 (z); a mesh file "
+                        "brings its own. Every particle must stay inside "
+                        "the grid.");
       prm.declare_entry("Lower corner",
                         default_point(dim, 0.),
                         Patterns::List(Patterns::Double(), dim, dim),
-                        "Lower corner of the box [m].");
+                        "Lower corner of the box [m] (Type = hyper "
+                        "rectangle).");
       prm.declare_entry("Upper corner",
                         default_point(dim, 1.),
                         Patterns::List(Patterns::Double(), dim, dim),
-                        "Upper corner of the box [m].");
+                        "Upper corner of the box [m] (Type = hyper "
+                        "rectangle); must exceed Lower corner in every "
+                        "direction.");
       prm.declare_entry("Subdivisions",
                         "10",
                         Patterns::List(Patterns::Integer(1), 1, dim),
-                        "Cells per direction: one number for all directions "
-                        "or one per direction.");
-      prm.declare_entry("Mesh file",
-                        "",
-                        Patterns::FileName(),
-                        "Mesh file for Type = mesh file, relative to the "
-                        "parameter file's folder or absolute.");
+                        "Cells of the box per direction (Type = hyper "
+                        "rectangle): one number for all directions or one "
+                        "per direction.");
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::FileName(),
+        "The grid for Type = mesh file (required there): Gmsh .msh or UCD "
+        ".inp/.ucd; any other extension is refused. A relative path is "
+        "looked up first in the folder of the parameter file, then in the "
+        "working directory. A file that cannot be read, and a cell whose "
+        "(bi/tri)linear map has a zero or negative Jacobian at a vertex "
+        "(inverted, flat, vertices in the wrong order), are input errors.");
       prm.declare_entry("Global refinements",
                         "0",
                         Patterns::Integer(0, 12),
-                        "Uniform refinements applied after creation.");
+                        "Uniform refinements applied after the grid is "
+                        "created, for both types; each halves the cell "
+                        "size.");
       prm.leave_subsection();
     }
 
@@ -79,18 +94,28 @@ namespace mpm
       prm.declare_entry("Fixed boundary ids",
                         "",
                         Patterns::List(Patterns::Integer(0, 255)),
-                        "Grid boundary ids whose nodes are held fixed.");
+                        "Grid boundary ids whose nodes are held fixed "
+                        "(every velocity component zero). An id listed both "
+                        "here and in Slip boundary ids is refused; a node "
+                        "that touches a fixed and a slip face is fixed. Ids "
+                        "that do not occur in the grid are ignored.");
       prm.declare_entry("Slip boundary ids",
                         "",
                         Patterns::List(Patterns::Integer(0, 255)),
-                        "Grid boundary ids with zero normal velocity; other "
-                        "boundaries are free.");
+                        "Grid boundary ids with zero normal velocity and "
+                        "free tangential velocity. A node on several slip "
+                        "faces with different normals is held in all their "
+                        "directions (a corner of a 2D box is then fixed). "
+                        "Boundaries not listed here or in Fixed boundary "
+                        "ids are free: particles may leave the grid there.");
       prm.declare_entry("Particles leaving the grid",
                         "error",
                         Patterns::Selection("error|remove"),
-                        "error: stop with a message naming the particle; "
-                        "remove: delete it and report the removed mass in "
-                        "the statistics.");
+                        "error: the run stops (status 2) with a message "
+                        "naming the particle, its body, the step and its "
+                        "position; remove: the particle is deleted and its "
+                        "mass added to the removed_mass column of the "
+                        "statistics file.");
       prm.leave_subsection();
     }
 

@@ -113,7 +113,7 @@ namespace mpm
   ExplicitIntegrator<dim>::particle_to_grid(const transfer::P2GContent content)
   {
     // Remedies around the force pass change the forces of this pass only
-    // (the 1D convection correction: doc/theory.md, section 4.11).
+    // (the 1D convection correction: doc/theory/convection_correction.md).
     const bool force_pass =
       content == transfer::P2GContent::force ||
       content == transfer::P2GContent::mass_momentum_force;

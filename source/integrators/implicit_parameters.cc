@@ -21,7 +21,10 @@ namespace mpm
                         "(free degrees of freedom) is at most this times the "
                         "larger of the norms of the external and of the "
                         "internal force (the internal force includes the "
-                        "reactions), and the energy criterion holds.");
+                        "reactions at fixed and slip nodes), and the energy "
+                        "criterion holds. Like every entry of this "
+                        "subsection, used by Integrator = quasi-static and "
+                        "Newmark only.");
       prm.declare_entry("Absolute residual tolerance",
                         "1e-12",
                         Double(0),
@@ -48,16 +51,22 @@ namespace mpm
                         "6",
                         Integer(0),
                         "How often a step whose Newton iteration fails may "
-                        "be halved before the run stops (each half grows "
-                        "back to the full step once Newton converges again).");
+                        "be halved. Each half grows back to the full step "
+                        "once Newton converges in at most 4 iterations. When "
+                        "the last cut fails, the run stops (status 2) with "
+                        "the residual history in the message.");
       prm.declare_entry("Linear solver",
                         "automatic",
                         Selection("automatic|CG|GMRES|direct"),
-                        "CG or GMRES preconditioned by ML algebraic multigrid "
-                        "with the rigid-body modes as near-null space, or a "
-                        "direct solver (Amesos KLU, small problems). "
-                        "automatic: CG if every material has a symmetric "
-                        "tangent (hyperelastic), else GMRES.");
+                        "CG or GMRES(100) preconditioned by ML algebraic "
+                        "multigrid with the rigid-body modes as near-null "
+                        "space, or a direct solver (Amesos KLU, small "
+                        "problems). automatic: CG if the tangent is "
+                        "symmetric (every material hyperelastic, no "
+                        "volumetric smoothing and no stress filter), else "
+                        "GMRES; linear elastic's tangent is not symmetric "
+                        "(Hughes-Winget rotation). CG with a non-symmetric "
+                        "tangent is refused.");
       prm.declare_entry("Linear tolerance",
                         "1e-10",
                         Double(0),

@@ -93,6 +93,7 @@ namespace mpm
 using mpm::materials::LinearElastic;
 MPM_REGISTER_MATERIAL(LinearElastic,
                       "linear elastic",
-                      "Isotropic hypoelastic material (Jaumann rate, "
-                      "Hughes-Winget update); linear elasticity for small "
-                      "strains.")
+                      "isotropic hypoelastic material, Jaumann rate of "
+                      "the Cauchy stress = C : D with the incrementally "
+                      "objective Hughes-Winget update; linear elasticity "
+                      "for small strains. Every kinematic assumption.")

@@ -101,20 +101,27 @@ namespace mpm
       if (registry().empty())
         throw std::logic_error("No material model is registered");
 
-      std::string names;
-      for (const auto &name_and_entry : registry())
-        names += (names.empty() ? "" : "|") + name_and_entry.first;
+      std::string names, models;
+      for (const auto &[name, entry] : registry())
+        {
+          names += (names.empty() ? "" : "|") + name;
+          models += "\n" + name + ": " + entry.description;
+        }
 
       prm.declare_entry("Model",
                         default_model(),
                         dealii::Patterns::Selection(names),
                         "Constitutive model. Its parameters are read from "
-                        "the subsection of the same name.");
+                        "the subsection whose name is the model's with an "
+                        "upper-case first letter; the subsections of the "
+                        "other models are ignored." +
+                          models);
       prm.declare_entry("Density",
                         "1000",
                         mpm::NumberOrConstant(),
-                        "Reference (initial) mass density rho_0 [kg/m^3]. "
-                        "Must be positive.");
+                        "Reference (initial) mass density rho_0 [kg/m^3], "
+                        "positive. A particle's mass is rho_0 times its "
+                        "initial volume and never changes.");
 
       for (const auto &name_and_entry : registry())
         {

@@ -155,4 +155,9 @@ namespace mpm
 using mpm::materials::NeoHookean;
 MPM_REGISTER_MATERIAL(NeoHookean,
                       "neo-Hookean",
-                      "Compressible neo-Hookean hyperelastic material.")
+                      "compressible neo-Hookean hyperelastic material, "
+                      "psi = mu/2 (I_1 - 3) - mu ln J + lambda/2 (ln J)^2 "
+                      "with lambda and mu from E and nu. The stress follows "
+                      "from F alone, so an Initial stress acts only until "
+                      "the first stress update. Three dimensional, plane "
+                      "strain and uniaxial strain.")

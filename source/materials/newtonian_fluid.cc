@@ -30,7 +30,7 @@ namespace mpm
       prm.declare_entry("Viscosity",
                         "1e-3",
                         mpm::NumberOrConstant(),
-                        "Dynamic (shear) viscosity mu [Pa s]. Must be "
+                        "Dynamic (shear) viscosity mu [Pa s], "
                         "non-negative.");
       prm.declare_entry("Equation of state",
                         "linear",
@@ -41,8 +41,10 @@ namespace mpm
       prm.declare_entry("Bulk modulus",
                         "2.2e9",
                         mpm::NumberOrConstant(),
-                        "Bulk modulus K at the reference density [Pa]. Must "
-                        "be positive.");
+                        "Bulk modulus K at the reference density [Pa], "
+                        "positive. An initial pressure at or below -K "
+                        "(linear) or -K/gamma (Tait) has no volume ratio "
+                        "and is refused.");
       prm.declare_entry("Tait exponent",
                         "7",
                         mpm::NumberOrConstant(),
@@ -193,5 +195,12 @@ namespace mpm
 using mpm::materials::NewtonianFluid;
 MPM_REGISTER_MATERIAL(NewtonianFluid,
                       "Newtonian fluid",
-                      "Compressible Newtonian fluid with a linear or Tait "
-                      "equation of state.")
+                      "compressible Newtonian fluid, sigma = -p(J) I + "
+                      "2 mu dev D, with a linear or Tait equation of state. "
+                      "The pressure of an Initial stress is kept (the "
+                      "particle starts at the J of that pressure, its mass "
+                      "unchanged), so a hydrostatic initial stress is in "
+                      "equilibrium; the deviatoric part is replaced at the "
+                      "first stress update. The stable time step uses the "
+                      "sound speed only (no viscous limit). Three "
+                      "dimensional, plane strain and uniaxial strain.")

@@ -3,6 +3,9 @@
 using mpm::materials::Rigid;
 MPM_REGISTER_MATERIAL(Rigid,
                       "rigid",
-                      "A body that moves as its Prescribed velocity says: no "
-                      "stress, no stiffness; the nodes it reaches follow it "
-                      "(quasi-static integrator).")
+                      "a body that moves as its Prescribed velocity says, "
+                      "with no stress and no stiffness; the nodes it "
+                      "reaches follow it. Only its Density is used (the "
+                      "mass that marks the nodes it reaches). Needs a "
+                      "Prescribed velocity and the quasi-static "
+                      "integrator.")

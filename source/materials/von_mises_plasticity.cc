@@ -212,5 +212,10 @@ namespace mpm
 using mpm::materials::VonMisesPlasticity;
 MPM_REGISTER_MATERIAL(VonMisesPlasticity,
                       "von Mises plasticity",
-                      "Hypoelastic-plastic material with a von Mises yield "
-                      "surface and linear isotropic hardening.")
+                      "hypoelastic-plastic material: the Hughes-Winget "
+                      "elastic trial stress, then radial return to the von "
+                      "Mises surface |dev sigma| = sqrt(2/3) (sigma_y + H "
+                      "alpha) with linear isotropic hardening; the "
+                      "equivalent plastic strain alpha is stored per "
+                      "particle (output equivalent_plastic_strain). Three "
+                      "dimensional, plane strain and uniaxial strain.")

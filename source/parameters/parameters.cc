@@ -32,21 +32,33 @@ namespace mpm
     TimeStepping::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Time stepping");
-      prm.declare_entry("End time", "1", Patterns::Double(0), "End time [s].");
+      prm.declare_entry("End time",
+                        "1",
+                        Patterns::Double(0),
+                        "Simulated end time [s]. The last step is shortened "
+                        "so that the run ends exactly at this time.");
       prm.declare_entry(
         "Integrator",
         "explicit",
         Patterns::Selection("explicit|quasi-static|Newmark"),
-        "explicit: explicit dynamics (the scheme, step control, FLIP "
-        "and damping entries below). quasi-static: every step solves "
-        "the static equilibrium at the end of the step by Newton's method "
-        "(subsection Implicit solver); time is a pseudo-time that ramps "
-        "the loads, the step is Time step (Time step control = fixed), "
-        "and the particles keep their velocity. Newmark: implicit "
-        "dynamics, every step solves the equation of motion with the "
-        "lumped nodal mass at the end of the step by Newton's method "
-        "(Newmark beta and gamma; the step is Time step, without a "
-        "stability limit).");
+        "explicit: explicit dynamics; every entry of this subsection "
+        "applies. quasi-static: every step solves the static equilibrium "
+        "at the end of the step by Newton's method (subsection Implicit "
+        "solver); time is a pseudo-time that ramps the loads, each step is "
+        "Time step long, and the particles keep their velocity. It needs "
+        "Time step control = fixed, refuses Damping coefficient, Velocity "
+        "transfer = APIC and a material without shear stiffness at rest "
+        "(Newtonian fluid), and does not use Scheme and FLIP fraction. "
+        "Newmark: implicit dynamics, every step solves the equation of "
+        "motion with the lumped nodal mass at the end of the step by "
+        "Newton's method (Newmark beta and gamma). It needs Time step "
+        "control = fixed, and the step is not limited by the explicit "
+        "stability limit; Damping coefficient applies; Velocity transfer = "
+        "APIC, a FLIP fraction below 1 and rigid bodies (Prescribed "
+        "velocity) are refused; Scheme is not used. Both implicit "
+        "integrators refuse the locking remedies that have no "
+        "linearization: Stress filter = convection correction, Volumetric "
+        "smoothing = node and Filtered stress = force only.");
       prm.declare_entry("Newmark beta",
                         "0.25",
                         Patterns::Double(0, 0.5),
@@ -55,41 +67,63 @@ namespace mpm
                         "= 1/2 and beta = 1/4 (the trapezoidal rule) "
                         "second-order accurate and without numerical "
                         "damping; unconditionally stable for beta >= "
-                        "gamma / 2.");
+                        "gamma / 2. A beta below Newmark gamma / 2 (only "
+                        "conditionally stable) is refused.");
       prm.declare_entry("Newmark gamma",
                         "0.5",
                         Patterns::Double(0.5, 1),
                         "gamma of Integrator = Newmark: v_n+1 = v_n + dt ((1 "
                         "- gamma) a_n + gamma a_n+1); above 1/2 it damps "
                         "high frequencies (first-order accurate).");
-      prm.declare_entry("Scheme",
-                        "MUSL",
-                        Patterns::Selection("USF|USL|MUSL"),
-                        "When the stress is updated: USF (before the "
-                        "internal force), USL (after the grid update), MUSL "
-                        "(after re-mapping the updated particle momentum). "
-                        "USL reads the grid velocity of nodes that particles "
-                        "barely touch at free surfaces; it then needs a CFL "
-                        "number of about 0.1 (see doc/theory.md).");
-      prm.declare_entry("Time step control",
-                        "CFL",
-                        Patterns::Selection("fixed|CFL"),
-                        "Fixed step, or dt = CFL number * min_p h/(c_p + "
-                        "|v_p|) recomputed every step.");
+      prm.declare_entry(
+        "Scheme",
+        "MUSL",
+        Patterns::Selection("USF|USL|MUSL"),
+        "When the explicit step updates the stress: USF "
+        "(update stress first: before the internal force, "
+        "with the nodal velocity of the mapped momentum), "
+        "USL (update stress last: after the grid update, "
+        "with the new nodal velocity), MUSL (modified USL: "
+        "after the updated particle momentum has been "
+        "mapped back to the grid). USL reads the grid "
+        "velocity of nodes that particles barely touch at "
+        "free surfaces; it then needs a CFL number of about "
+        "0.1 (doc/theory/explicit_step.md). Not used by the implicit "
+        "integrators.");
+      prm.declare_entry(
+        "Time step control",
+        "CFL",
+        Patterns::Selection("fixed|CFL"),
+        "fixed: every step is Time step long. CFL: every step uses dt = CFL "
+        "number * min_p h_p/(c_p + |v_p|), recomputed every step from the "
+        "previous step's stress update (the first step from the initial "
+        "state); h_p is the height of the particle's grid cell (its measure "
+        "over its largest face's measure; in 1D its length), c_p the "
+        "material's current wave speed and v_p the particle velocity. The "
+        "implicit integrators need fixed.");
       prm.declare_entry("Time step",
                         "1e-3",
                         Patterns::Double(0),
-                        "Step for Time step control = fixed [s]. A step above "
-                        "the stability limit h/(c + |v|) is refused.");
+                        "Step for Time step control = fixed [s]; must be "
+                        "positive. Explicit: a step above the stability "
+                        "limit min_p h_p/(c_p + |v_p|) of the initial state "
+                        "is refused (the limit is not checked again during "
+                        "the run). A step that would need more than 2^53 "
+                        "steps to reach End time is refused.");
       prm.declare_entry("CFL number",
                         "0.5",
                         Patterns::Double(0, 1),
-                        "Fraction of the stability limit used as step.");
+                        "The fraction C of the stability limit used as step "
+                        "with Time step control = CFL; must be positive.");
       prm.declare_entry("FLIP fraction",
                         "1",
                         Patterns::Double(0, 1),
-                        "Particle velocity update: 1 = FLIP (increment), 0 "
-                        "= PIC (grid velocity), in between a blend.");
+                        "alpha in the particle velocity update v_p <- alpha "
+                        "(v_p + sum_i N_ip dv_i) + (1 - alpha) sum_i N_ip "
+                        "v_i: 1 = FLIP (increment), 0 = PIC (grid "
+                        "velocity), in between a blend. Must stay 1 with "
+                        "Velocity transfer = APIC and with Integrator = "
+                        "Newmark.");
       prm.declare_entry(
         "Velocity transfer",
         "FLIP",
@@ -100,16 +134,26 @@ namespace mpm
         "N_ip besides v_p = sum_i N_ip v_i, and P2G sends "
         "m_p (v_p + C_p (x_i - x_p)): linear velocity fields (a rigid "
         "rotation) are transferred exactly and angular momentum is "
-        "conserved. With APIC the FLIP fraction must stay 1 (unused).");
-      prm.declare_entry("Damping coefficient",
-                        "0",
-                        Patterns::Double(0),
-                        "Mass-proportional damping c [1/s]: the grid "
-                        "force gets -c m_i v_i (for quasi-static runs).");
+        "conserved. APIC needs a Shape functions/Family other than "
+        "standard (with Q1 it is unstable), and the FLIP fraction must "
+        "stay 1 (unused). Refused by the implicit integrators.");
+      prm.declare_entry(
+        "Damping coefficient",
+        "0",
+        Patterns::Double(0),
+        "Mass-proportional damping c [1/s]: the grid force gets -c m_i v_i. "
+        "Meant for reaching a static state with a small FLIP fraction: it "
+        "cannot reach FLIP's particle-level velocity modes, which then do "
+        "not come to rest. The explicit step multiplies the grid velocity "
+        "by 1 - c dt, so c times the first step (Time step, or CFL number "
+        "times the initial stability limit) above 1 is refused. With "
+        "Integrator = Newmark the damping is implicit, without that limit; "
+        "quasi-static refuses it.");
       prm.declare_entry("Maximum number of steps",
                         "0",
                         Patterns::Integer(0),
-                        "Stop after this many steps (0: no limit).");
+                        "Stop after this many steps (0: no limit). The final "
+                        "state is written when the limit stops the run.");
       prm.leave_subsection();
     }
 
@@ -209,16 +253,20 @@ namespace mpm
         "error",
         Patterns::Selection("error|clamp"),
         "What happens when a particle domain reaches outside the grid: "
-        "error stops with a message naming the particle; clamp cuts GIMP "
-        "boxes at the grid boundary and moves CPDI corners onto it.");
+        "error stops the run (status 2) with a message naming the "
+        "particle, its position and the step; clamp cuts GIMP boxes at the "
+        "grid boundary and moves CPDI corners onto it. Use clamp when a "
+        "body fills the grid up to a wall.");
       prm.declare_entry(
         "Cache stencils",
         "true",
         Patterns::Bool(),
-        "GIMP, CPDI, CPDI2: build each particle's stencil once per step and "
-        "keep it for the step's later passes (G2P, the stress update), at "
-        "about 200 bytes per particle in 2D and 600 in 3D (CPDI); false "
-        "builds it in every pass (less memory, slower).");
+        "GIMP, CPDI, CPDI2: build each particle's stencil (nodes, weights, "
+        "weight gradients) once per step and keep it for the step's later "
+        "passes (G2P, the stress update), at about 200 bytes per particle "
+        "in 2D and 600 in 3D (CPDI); false builds it in every pass (less "
+        "memory, slower). The results are the same to round-off. The "
+        "standard family has no stencil to keep.");
       prm.leave_subsection();
     }
 
@@ -238,14 +286,19 @@ namespace mpm
     Body<dim>::declare_parameters(ParameterHandler &prm)
     {
       const std::string xyz = dim == 1 ? "x" : dim == 2 ? "x, y" : "x, y, z";
-      prm.declare_entry("Geometry",
-                        "box",
-                        Patterns::Selection("box|ball|quadrilateral|mesh file"),
-                        "Body mesh: a subdivided box, a ball (disk in 2D) "
-                        "meshed conformingly, a quadrilateral (the "
-                        "subdivided unit box mapped bi/trilinearly onto the "
-                        "Corners), or a mesh file. Each body cell is split "
-                        "into n^dim particle domains.");
+      const std::string XYZ = dim == 1 ? "X" : dim == 2 ? "X, Y" : "X, Y, Z";
+      prm.declare_entry(
+        "Geometry",
+        "box",
+        Patterns::Selection("box|ball|quadrilateral|mesh file"),
+        "The body mesh: box (Lower corner, Upper corner, Subdivisions), "
+        "ball (Center, Radius, Refinements; a disk in 2D, a segment in 1D), "
+        "quadrilateral (the subdivided unit box mapped bi/trilinearly onto "
+        "the Corners) or mesh file (Mesh file). Each body cell is split into "
+        "n^dim sub-cells (n = Particles per direction), and each sub-cell "
+        "becomes one particle. Every particle must lie inside the grid, "
+        "and particles of one body must not lie inside another body "
+        "(bodies may touch); both are input errors.");
       prm.declare_entry("Lower corner",
                         default_point(dim, 0.25),
                         Patterns::List(Patterns::Double(), dim, dim),
@@ -253,7 +306,8 @@ namespace mpm
       prm.declare_entry("Upper corner",
                         default_point(dim, 0.75),
                         Patterns::List(Patterns::Double(), dim, dim),
-                        "Box: upper corner [m].");
+                        "Box: upper corner [m]; must exceed Lower corner in "
+                        "every direction.");
       prm.declare_entry("Subdivisions",
                         "4",
                         Patterns::List(Patterns::Integer(1), 1, dim),
@@ -263,12 +317,14 @@ namespace mpm
         "Corners",
         "",
         Patterns::Anything(),
-        "Quadrilateral: the 2^dim corners separated by ';', counter-"
-        "clockwise in 2D (Cook's membrane: 0, 0; 48, 44; 48, 60; 0, 44); in "
-        "3D the bottom face counter-clockwise, then the top face. Boundary "
-        "ids as for a box in the corners' own directions (2D: 0 the edge "
-        "from the first corner to the fourth, 1 from the second to the "
-        "third, 2 from the first to the second, 3 from the third to the "
+        "Quadrilateral (required there, refused for the other geometries): "
+        "the 2^dim corners [m] separated by ';', counter-clockwise in 2D "
+        "(Cook's membrane: 0, 0; 48, 44; 48, 60; 0, 44); in 3D the bottom "
+        "face counter-clockwise, then the top face. Corners that give an "
+        "inverted or degenerate cell (clockwise, not convex) are refused. "
+        "Boundary ids as for a box in the corners' own directions (2D: 0 "
+        "the edge from the first corner to the fourth, 1 from the second to "
+        "the third, 2 from the first to the second, 3 from the third to the "
         "fourth).");
       prm.declare_entry("Center",
                         default_point(dim, 0.5),
@@ -277,17 +333,24 @@ namespace mpm
       prm.declare_entry("Radius",
                         "0.25",
                         NumberOrConstant(),
-                        "Ball: radius [m] (a number or an expression of the "
-                        "Constants).");
-      prm.declare_entry("Refinements",
-                        "2",
-                        Patterns::Integer(0, 10),
-                        "Ball: global refinements of the coarse ball mesh "
-                        "(12 cells in 2D, 32 in 3D).");
-      prm.declare_entry("Mesh file",
-                        "",
-                        Patterns::FileName(),
-                        "Mesh file: body mesh (Gmsh .msh or UCD).");
+                        "Ball: radius [m], positive (a number or an "
+                        "expression of the Constants).");
+      prm.declare_entry(
+        "Refinements",
+        "2",
+        Patterns::Integer(0, 10),
+        "Ball: global refinements of the coarse ball mesh (12 cells in 2D, "
+        "32 in 3D; in 1D the segment is split into 2^(Refinements + 1) "
+        "cells). The cells are straight-sided, so the particles fill the "
+        "inscribed polygon or polyhedron. Boundary id 0 on the whole "
+        "surface (1D: 0 at the left end, 1 at the right end).");
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::FileName(),
+        "Mesh file (required there): the body mesh, Gmsh .msh or UCD "
+        ".inp/.ucd, looked up and checked like Grid/Mesh file. Its boundary "
+        "ids are those of the file.");
       prm.declare_entry("Particles per direction",
                         "2",
                         Patterns::Integer(1, 10),
@@ -295,49 +358,66 @@ namespace mpm
       prm.declare_entry("Initial velocity",
                         default_expression(dim),
                         Patterns::Anything(),
-                        "Velocity at t = 0 [m/s], dim expressions of " + xyz +
-                          " separated by ';' (muparser).");
+                        "Velocity at t = 0 [m/s]: dim expressions of the "
+                        "initial position " +
+                          xyz + " and the Constants, separated by ';'.");
       prm.declare_entry(
         "Initial stress",
         dim == 1 ? "0" :
         dim == 2 ? "0; 0; 0" :
                    "0; 0; 0; 0; 0; 0",
         Patterns::Anything(),
-        std::string("Cauchy stress at t = 0 [Pa], expressions of ") + xyz +
-          " separated by ';': " +
+        std::string("Cauchy stress at t = 0 [Pa], tension positive: "
+                    "expressions of the initial position ") +
+          xyz + " and the Constants, separated by ';': " +
           (dim == 1 ? "xx" :
-           dim == 2 ? "xx; yy; xy (and optionally a fourth, zz)" :
+           dim == 2 ? "xx; yy; xy, and optionally a fourth, zz (without it "
+                      "zz starts at 0)" :
                       "xx; yy; zz; yz; xz; xy") +
           ".");
-      prm.declare_entry("Body force",
-                        default_expression(dim),
-                        Patterns::Anything(),
-                        "Body force per unit mass [m/s^2], expressions of " +
-                          xyz + ", the material coordinates " +
-                          (dim == 1 ? "X" :
-                           dim == 2 ? "X, Y" :
-                                      "X, Y, Z") +
-                          " (initial position) and t, separated by ';'.");
-      prm.declare_entry("Traction",
-                        default_expression(dim),
-                        Patterns::Anything(),
-                        "Surface traction [Pa] on the body-mesh boundaries "
-                        "listed in Traction boundary ids; same variables "
-                        "as Body force.");
+      prm.declare_entry(
+        "Body force",
+        default_expression(dim),
+        Patterns::Anything(),
+        "Body force per unit mass [m/s^2], e.g. gravity " +
+          std::string(dim == 1 ? "-9.81" :
+                      dim == 2 ? "0; -9.81" :
+                                 "0; 0; -9.81") +
+          ": dim expressions of the current position " + xyz +
+          ", the material coordinates " + XYZ +
+          " (the initial position), the time t and the Constants, "
+          "separated by ';', evaluated at each particle at the start of "
+          "each step.");
+      prm.declare_entry(
+        "Traction",
+        default_expression(dim),
+        Patterns::Anything(),
+        "Surface traction [Pa; in 2D per unit thickness, in 1D per unit "
+        "cross-section] on the body-mesh boundaries listed in Traction "
+        "boundary ids; same variables as Body force. Each particle next to "
+        "a loaded face carries the area of its part of the face and "
+        "applies the traction there, evaluated at the face. A dead load: "
+        "the area is that of the initial configuration and the traction "
+        "does not follow the surface normal.");
       prm.declare_entry("Traction boundary ids",
                         "",
                         Patterns::List(Patterns::Integer(0, 255)),
-                        "Body-mesh boundary ids that carry the traction "
-                        "(box: 0/1 x min/max, 2/3 y, 4/5 z).");
+                        "Boundary ids of the body mesh (not of the grid) "
+                        "that carry the Traction: box 0/1 x min/max, 2/3 y, "
+                        "4/5 z; ball, quadrilateral and mesh file as their "
+                        "entries say.");
       prm.declare_entry(
         "Prescribed velocity",
         "",
         Patterns::Anything(),
         "Empty: the body moves with the grid. Otherwise the body is rigid "
-        "(Material/Model = rigid) and moves with this velocity [m/s], dim "
-        "expressions of t separated by ';': the nodes it reaches follow "
-        "it, in the Prescribed directions where they also carry another "
-        "body, in every direction elsewhere (Integrator = quasi-static).");
+        "and moves with this velocity [m/s], dim expressions of t "
+        "separated by ';'; it needs Material/Model = rigid and Time "
+        "stepping/Integrator = quasi-static. The grid nodes it reaches "
+        "follow its displacement over each step: in the Prescribed "
+        "directions where they also carry another body, in every direction "
+        "where they do not. A wall's constraint wins over the body's. Its "
+        "reaction is written to the statistics file (reaction_x, ...).");
       prm.declare_entry(
         "Prescribed directions",
         dim == 1 ? "x" :
@@ -424,37 +504,53 @@ namespace mpm
                         "output",
                         Patterns::DirectoryName(),
                         "Folder for all results, relative to the working "
-                        "directory. Created if missing.");
+                        "directory (or absolute); must not be empty. It is "
+                        "created if missing, only after the whole input has "
+                        "been checked. Files of the same name are "
+                        "overwritten, other files are left alone. The "
+                        "statistics file and parameters.prm are always "
+                        "written.");
       prm.declare_entry("Interval",
                         "0.1",
                         Patterns::Double(0),
                         "Simulated time between outputs [s]; 0: every "
-                        "step. The first and last states are always "
-                        "written.");
+                        "step. The initial and the final state are always "
+                        "written; otherwise an output is written at the end "
+                        "of every step that reaches or passes the next "
+                        "multiple of Interval (one output however many "
+                        "multiples a step passes), so output times are "
+                        "step times.");
       prm.declare_entry("Write vtu",
                         "true",
                         Patterns::Bool(),
-                        "ParaView files of particles (and grid): "
-                        "particles.pvd, grid.pvd.");
+                        "ParaView files of the particles with all their "
+                        "properties (particles.pvd, particles_NNNNN.pvtu "
+                        "and its .vtu pieces), and of the grid if Write "
+                        "grid.");
       prm.declare_entry("Write grid",
                         "true",
                         Patterns::Bool(),
                         "Also write the background grid fields (nodal "
-                        "mass, velocity) when Write vtu is on.");
+                        "mass, nodal velocity, the MPI rank of each cell: "
+                        "grid.pvd) when Write vtu is on.");
       prm.declare_entry("Write csv",
                         "true",
                         Patterns::Bool(),
-                        "Particle table particles-NNNNN.csv, sorted by id.");
+                        "Particle table particles-NNNNN.csv, sorted by id, "
+                        "with every particle property (gathered on rank "
+                        "0).");
       prm.declare_entry("Test summary file",
                         "",
                         Patterns::FileName(),
                         "If set, a short summary for regression tests is "
                         "written to this file (relative to the working "
-                        "directory).");
+                        "directory) at the end of a successful run: one "
+                        "line per output with 7 significant digits.");
       prm.declare_entry("Progress interval",
                         "10",
                         Patterns::Double(0),
-                        "Wall-clock seconds between progress lines.");
+                        "Wall-clock seconds between progress lines on the "
+                        "screen (one more is printed at the end).");
       prm.declare_entry(
         "Energy balance check",
         "warn",
@@ -465,7 +561,8 @@ namespace mpm
         "energy out, so growth means the scheme creates energy. warn: one "
         "warning naming the step; stop: a runtime error (status 2). Only "
         "with constant body forces and tractions and no prescribed motion, "
-        "whose work is known.");
+        "whose work is known; the header line output: says whether the "
+        "balance is watched.");
       prm.declare_entry("Energy balance tolerance",
                         "0.1",
                         Patterns::Double(0),
@@ -504,27 +601,33 @@ namespace mpm
                         "0",
                         Patterns::Integer(0),
                         "Write a checkpoint after every step whose number is "
-                        "a multiple of this (0: not by step count). The "
-                        "checkpoint is kept in Output/Directory/checkpoint/; "
-                        "the two latest complete ones are kept.");
+                        "a multiple of this (0: not by step count), after "
+                        "the output of that step. The checkpoints are kept "
+                        "in Output/Directory/checkpoint/; the two latest "
+                        "complete ones are kept, so a run killed while it "
+                        "writes one can resume from the previous one.");
       prm.declare_entry("Wall time between checkpoints",
                         "0",
                         Patterns::Double(0),
                         "Also write a checkpoint when this many wall-clock "
                         "seconds have passed since the last one (or the "
-                        "start; 0: not by wall-clock time).");
-      prm.declare_entry("Resume computation",
-                        "false",
-                        Patterns::Selection("false|true|auto"),
-                        "true: continue from the latest checkpoint in "
-                        "Output/Directory/checkpoint/ (an input error if "
-                        "there is none); auto: continue if there is one, "
-                        "else start from the initial state; false: start "
-                        "from the initial state. The command-line option "
-                        "--resume sets true. A restart refuses parameters "
-                        "that differ from the checkpoint's, except Output, "
-                        "Checkpointing, Time stepping/End time and Maximum "
-                        "number of steps.");
+                        "start; 0: not by wall-clock time). Rank 0's clock "
+                        "decides.");
+      prm.declare_entry(
+        "Resume computation",
+        "false",
+        Patterns::Selection("false|true|auto"),
+        "true: continue from the latest checkpoint in "
+        "Output/Directory/checkpoint/ (an input error if there is none); "
+        "auto: continue if there is one, else start from the initial state "
+        "(one command for every job of a chain of batch jobs); false: start "
+        "from the initial state. The command-line option --resume sets "
+        "true. A restart refuses, before writing anything, a parameter that "
+        "differs from the checkpoint's, except those of Output, "
+        "Checkpointing and Load balancing, Time stepping/End time and "
+        "Maximum number of steps (raise End time to extend a run), and a "
+        "changed grid mesh file. In 2D and 3D the number of MPI ranks may "
+        "change.");
       prm.declare_entry("Damaged checkpoint",
                         "stop",
                         Patterns::Selection("stop|use previous"),
@@ -558,11 +661,19 @@ namespace mpm
       prm.declare_entry("Dimension",
                         "2",
                         Patterns::Integer(1, 3),
-                        "Space dimension of the model: 1, 2 or 3.");
+                        "Space dimension of the model: 1, 2 or 3. Read in a "
+                        "first pass before the rest of the file (it decides "
+                        "how many components points and vectors have), so "
+                        "it must be set at top level, in the file or in a "
+                        "file it includes. Dimension 1 runs on one MPI rank "
+                        "only.");
       prm.declare_entry("Number of bodies",
                         "1",
                         Patterns::Integer(1, 100),
-                        "Number of `Body i` subsections (i = 0, 1, ...).");
+                        "Number of bodies, each described by its own "
+                        "subsection Bodies/Body i (i = 0, 1, ..., N-1). A "
+                        "missing Body i, or one with i >= N, is an input "
+                        "error. Read in the first pass, like Dimension.");
     }
 
     namespace
@@ -773,31 +884,48 @@ namespace mpm
         "default",
         Patterns::Selection("default|three dimensional|plane strain|"
                             "plane stress|uniaxial strain|uniaxial stress"),
-        "How the model is embedded in 3D. default: three dimensional in 3D, "
-        "plane strain in 2D, uniaxial stress in 1D.");
-      prm.declare_entry("Constants",
-                        "",
-                        Patterns::Anything(),
-                        "Named constants for all expressions, e.g. "
-                        "'v0=0.1, L=25'. Benchmarks read their physical "
-                        "parameters from here too.");
+        "How the model is embedded in 3D. 3D: three dimensional. 2D: plane "
+        "strain (eps_zz = 0, sigma_zz follows) or plane stress (sigma_zz = "
+        "sigma_xz = sigma_yz = 0). 1D: uniaxial stress (only sigma_xx is "
+        "non-zero: a thin bar) or uniaxial strain (only eps_xx is non-zero, "
+        "the lateral stresses follow). Any other combination is refused. "
+        "default: three dimensional in 3D, plane strain in 2D, uniaxial "
+        "stress in 1D. Plane stress and uniaxial stress need Model = linear "
+        "elastic (or rigid); the other models refuse them, so a 1D case "
+        "with them needs uniaxial strain.");
+      prm.declare_entry(
+        "Constants",
+        "",
+        Patterns::Anything(),
+        "Named constants, comma-separated name=value pairs with plain "
+        "numbers as values, e.g. 'v0=0.1, L=25'. Every expression can use "
+        "them, and so can the entries that take a number or an expression "
+        "of the Constants (the material numbers, Radius). Benchmarks read "
+        "their physical parameters from here too. A pair that is not "
+        "name=value, a value that is not a number, and a constant named x, "
+        "y, z or t (variables of the expressions) are refused.");
       prm.declare_entry("Benchmark",
                         "none",
                         Patterns::Selection(
                           benchmarks::benchmark_names_pattern()),
                         "Name of a benchmark whose error measures are added "
-                        "to the statistics file (see doc/benchmarks.md), or "
-                        "none. Each reads its constants from Constants:" +
+                        "as columns of the statistics file, or none. A "
+                        "benchmark in a dimension it does not support, or "
+                        "without a constant it needs, is an input error. "
+                        "Each reads its constants from Constants:" +
                           benchmarks::benchmark_list());
       prm.declare_entry(
         "Memory limit",
         "0",
         Patterns::Double(0),
-        "Memory the case may use over all ranks [GB]. Before anything is "
-        "allocated, the grid cells and particles are counted and their "
-        "memory estimated from below (--validate prints the estimate); a "
-        "case that needs more is refused. 0: the memory available on the "
-        "machines the ranks run on (MemAvailable, or a container's limit).");
+        "Memory the case may use over all ranks [GB, 10^9 bytes]. Before "
+        "anything is allocated, the grid cells and particles are counted "
+        "from the parameters and their memory estimated from below "
+        "(--validate prints the estimate); a case that needs more is "
+        "refused, naming the entries that set the counts. 0: the memory "
+        "available on the machines the ranks run on (MemAvailable, or a "
+        "container's limit if smaller). A grid or body with more than "
+        "2^32 - 1 cells is refused whatever the limit.");
       Grid<dim>::declare_parameters(prm);
       TimeStepping::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);

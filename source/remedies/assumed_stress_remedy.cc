@@ -23,10 +23,16 @@ namespace mpm
             "Filter metric",
             "mass",
             Selection("mass|compliance"),
-            "mass: the seed's projection (Frobenius inner product, "
-            "weights m_p); compliance: the Hellinger-Reissner "
-            "projection (inner product C^-1, weights V_p), for "
-            "materials with elastic moduli.");
+            "The inner product of the assumed-stress projection. mass: the "
+            "seed's projection (Frobenius inner product, weights m_p). "
+            "compliance: the Hellinger-Reissner projection (inner product C^-1 "
+            "of the kinematic assumption, weights V_p); it is exact in bending "
+            "for every nu (doc/theory/assumed_stress_filter.md), and it also "
+            "removes volumetric locking in plane strain, because its metric "
+            "barely weighs the mean stress of a nearly incompressible material "
+            "(mass does not). compliance needs a material with elastic moduli "
+            "(linear elastic, neo-Hookean, von Mises plasticity) and is "
+            "refused otherwise.");
           prm.declare_entry(
             "Filter field",
             "Pian-Sumihara",
@@ -36,7 +42,8 @@ namespace mpm
             "enriched: adds the linear variation of each normal stress along "
             "its own direction (7 / 21 betas), which does no work on a filled "
             "cell's Q1 velocities but keeps a stress that varies along the "
-            "motion of a convecting body (doc/theory.md 4.8).");
+            "motion of a convecting body "
+            "(doc/theory/assumed_stress_filter.md).");
           prm.declare_entry(
             "Filtered stress",
             "written back",
@@ -46,7 +53,12 @@ namespace mpm
             "force only: the projected field makes the internal force, the "
             "particles keep the stresses their material computed, so a smooth "
             "stress the field cannot represent is not cut back every step "
-            "(doc/theory.md 4.13). Elastic and hyperelastic materials only.");
+            "(doc/theory/assumed_stress_filter.md). force only needs Time "
+            "stepping/Velocity transfer = APIC (with FLIP the stress the "
+            "projection does not see grows from the transfer noise until the "
+            "step is unstable) and a material without plastic history; the "
+            "implicit integrators condense written back into each cell's "
+            "tangent and refuse force only.");
         }
 
         void
@@ -98,7 +110,8 @@ namespace mpm
               "Filtered stress = force only needs Time stepping/Velocity "
               "transfer = APIC: the stress the projection does not see "
               "accumulates in the particles, and with FLIP's transfer noise "
-              "it grows until the step is unstable (doc/theory.md 4.13); use "
+              "it grows until the step is unstable "
+              "(doc/theory/assumed_stress_filter.md); use "
               "Filtered stress = written back");
         }
       };
@@ -107,11 +120,14 @@ namespace mpm
         AssumedStressRemedy,
         "Stress filter",
         "assumed stress",
-        "assumed stress: project the stresses of this body's particles in "
-        "each cell onto the Pian-Sumihara field of the cell (5 parameters in "
-        "2D, 18 in 3D) where the next internal force is computed, and "
-        "integrate that field's force exactly over the particle domains "
-        "(doc/theory.md). 2D and 3D.")
+        "assumed stress: project the in-plane stresses of this body's "
+        "particles in each cell onto the assumed-stress field of the cell "
+        "(Filter field; Pian-Sumihara: 5 parameters in 2D, 18 in 3D) where the "
+        "next internal force is computed, and integrate that field's force "
+        "exactly over the particle domains "
+        "(doc/theory/assumed_stress_filter.md). A cell whose particles cannot "
+        "determine the linear terms (one particle, particles on a line) takes "
+        "their weighted mean stress. 2D and 3D (refused in 1D).")
     } // namespace
   }   // namespace remedies
 } // namespace mpm

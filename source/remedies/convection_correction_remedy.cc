@@ -26,7 +26,7 @@ namespace mpm
             "force per length integrated exactly against the shape functions "
             "over the occupied part of each cell, consistently with the "
             "stress; the body's total load stays sum_p m_p b_p "
-            "(doc/theory.md, 4.11).");
+            "(doc/theory/convection_correction.md).");
         }
 
         void
@@ -62,7 +62,11 @@ namespace mpm
         "convection correction: the internal force of each cell integrates "
         "the least-squares line of its particles' stresses exactly over the "
         "part of the cell the body occupies (the seed's correction of the "
-        "cell-crossing error); the stored stresses are not changed. 1D.")
+        "cell-crossing error, doc/theory/convection_correction.md); the "
+        "stored stresses are not changed. A cell with one particle takes "
+        "the line through it and the nearest particle of the body in a "
+        "neighbouring cell. 1D only, with Shape functions/Family = standard "
+        "and Integrator = explicit (refused otherwise).")
     } // namespace
   }   // namespace remedies
 } // namespace mpm

@@ -11,21 +11,24 @@ namespace mpm
   {
     namespace
     {
-      /// A parameter that chooses one remedy per body, and how its
-      /// documentation joins the remedies' descriptions.
+      /// A parameter that chooses one remedy per body. Its documentation
+      /// is the introduction followed by one line per remedy.
       struct Slot
       {
         const char *name;
         const char *introduction;
-        const char *separator;
       };
 
       constexpr Slot slots[] = {
-        {"Stress filter", "", " "},
+        {"Stress filter",
+         "The locking remedy that acts on this body's stresses where the "
+         "internal force is computed (none: the stresses as the material "
+         "computes them)."},
         {"Volumetric smoothing",
-         "The volumetric-locking remedy: the volume change that sets the "
-         "pressure is averaged, the deviatoric part stays the particle's. ",
-         "; "}};
+         "The volumetric-locking remedy (doc/theory/volumetric_smoothing.md): "
+         "the volume change that sets the pressure is averaged, the deviatoric "
+         "part stays the particle's (none: no averaging). It works with every "
+         "scheme, family and dimension."}};
 
       // Constructed on first use, so registrations from other translation
       // units work whatever the order of static initialisation. Keyed by
@@ -67,9 +70,7 @@ namespace mpm
           for (const auto &[name, entry] : entries)
             {
               names += "|" + name;
-              doc +=
-                (&entry == &entries.begin()->second ? "" : slot.separator) +
-                entry.description;
+              doc += "\n" + entry.description;
             }
           prm.declare_entry(slot.name,
                             "none",

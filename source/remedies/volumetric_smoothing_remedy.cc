@@ -45,14 +45,17 @@ namespace mpm
       MPM_REGISTER_REMEDY(CellSmoothing,
                           "Volumetric smoothing",
                           "cell",
-                          "cell: over this body's particles in the cell (the "
-                          "seed's theta-bar; F-bar for models that use F)")
+                          "cell: over this body's particles in the background "
+                          "cell (the seed's theta-bar: the volume-weighted "
+                          "rate tr L for rate models, F-bar for models of "
+                          "F).")
       MPM_REGISTER_REMEDY(NodeSmoothing,
                           "Volumetric smoothing",
                           "node",
                           "node: mass-weighted to the grid nodes and "
                           "interpolated back (averages of all node-smoothed "
-                          "bodies mix at shared nodes).")
+                          "bodies mix at shared nodes); refused by the "
+                          "implicit integrators.")
     } // namespace
   }   // namespace remedies
 } // namespace mpm

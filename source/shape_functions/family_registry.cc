@@ -15,20 +15,25 @@ namespace mpm
       };
 
       constexpr FamilyText texts[] = {
-        {Family::standard, "standard", "Q1 at the particle"},
+        {Family::standard,
+         "standard",
+         "the Q1 functions of the particle's cell, at its centre"},
         {Family::ugimp,
          "uGIMP",
-         "average over a box domain of fixed size (axis-parallel grids only)"},
+         "averaged over a box of fixed size around the particle (grids of "
+         "axis-parallel boxes only)"},
         {Family::cpgimp,
          "cpGIMP",
-         "the box follows the stretch of the particle"},
+         "the box follows the stretch of the particle (grids of "
+         "axis-parallel boxes only)"},
         {Family::cpdi,
          "CPDI",
-         "average over the parallelogram (parallelepiped) F r_i"},
+         "averaged over the parallelogram (parallelepiped) spanned by F "
+         "times the particle's initial half-vectors r_i"},
         {Family::cpdi2,
          "CPDI2",
-         "over the quadrilateral (hexahedron) of corners moved with the grid "
-         "velocity"}};
+         "averaged over the quadrilateral (hexahedron) of the particle's "
+         "corners, which move with the grid velocity"}};
 
       constexpr const FamilyText &
       text_of(const Family id)
@@ -91,12 +96,20 @@ namespace mpm
     std::string
     family_documentation()
     {
-      std::string text;
+      std::string text =
+        "The shape functions of every transfer between particles and grid. "
+        "The families other than standard average over particle domains, "
+        "which come from the body mesh "
+        "(doc/theory/particle_domain_families.md), so distorted body cells "
+        "give distorted domains. Every family works with every scheme and "
+        "locking remedy except Stress filter = convection correction, which "
+        "needs standard. A domain that reaches beyond the neighbours of its "
+        "particle's cell (GIMP) or beyond the cells its MPI rank knows, or "
+        "that collapses (CPDI: a corner angle with sine below 1e-4), stops "
+        "the run (status 2).";
       for (const FamilyTraits &f : registered_families())
-        text += (text.empty() ? "" : "; ") + std::string(f.name) + ": " +
-                f.description;
-      return text + ". Domains come from the body mesh (doc/theory.md, "
-                    "section 9).";
+        text += "\n" + std::string(f.name) + ": " + f.description + ".";
+      return text;
     }
   } // namespace shape_functions
 } // namespace mpm

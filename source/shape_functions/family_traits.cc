@@ -48,7 +48,7 @@ namespace mpm
           names_of([](const FamilyTraits &f) { return f.allows_apic; }) +
           "): with the standard Q1 functions the affine transfer C_p = sum_i "
           "v_i grad N_ip extrapolates the bilinear mode beyond the cell and "
-          "the step is unstable (doc/theory.md, section 9.8)");
+          "the step is unstable (doc/theory/apic.md)");
     }
   } // namespace shape_functions
 } // namespace mpm

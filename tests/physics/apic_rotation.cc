@@ -1,4 +1,4 @@
-// APIC transfers a rigid rotation exactly (doc/theory.md 9.8): a stress-free
+// APIC transfers a rigid rotation exactly (doc/theory/apic.md): a stress-free
 // disk spinning on a grid it is not aligned with gets the exact nodal
 // velocities omega x x_i, so its first stress update sees the pure spin:
 // C_p stays the spin and no stress appears, to round-off, with CPDI and

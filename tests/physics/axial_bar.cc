@@ -1,4 +1,4 @@
-// BENCHMARKS.md section 9: axial vibration of a fixed-free bar, E = 100,
+// Axial vibration of a fixed-free bar (doc/benchmarks/axial_bar.md), E = 100,
 // L = 25, rho = 1, v0 = 0.1, 16 cells, 2 particles per cell,
 // dt = 0.2 h/c, over one period T = 10. Exact: v = v0 cos(wt) sin(beta X).
 //

@@ -1,4 +1,5 @@
-// Cook's membrane set-up (BENCHMARKS.md section 7, prm/cooks_membrane.prm):
+// Cook's membrane set-up (doc/benchmarks/cooks_membrane.md,
+// prm/cooks_membrane.prm):
 // the body mesh Geometry = quadrilateral of the panel (0,0), (48,44),
 // (48,60), (0,44) in 12 x 12 cells with 2 x 2 particles each. The particle
 // volumes tile the panel exactly (area 48 (44 + 16)/2 = 1440), the

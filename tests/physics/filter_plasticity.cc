@@ -2,7 +2,8 @@
 // carry a particle's stress outside the yield surface (it mixes the
 // stresses of the cell), so the filter hands every stress it writes to the
 // material, which returns it to the surface with the plastic flow that
-// implies (Material::make_admissible; theory.md 4.8, strain consistency).
+// implies (Material::make_admissible; doc/theory/assumed_stress_filter.md,
+// strain consistency).
 // A von Mises block in plane strain is pulled apart with a low yield
 // stress; after every step no particle lies outside its yield surface,
 // while many lie on it (the check is not vacuous).

@@ -1,5 +1,6 @@
-// The manufactured solution of BENCHMARKS.md section 8
-// (prm/manufactured_solution.prm, doc/theory.md 4.12), standard MPM, MUSL,
+// The manufactured solution u_i = G sin(pi X_i) sin(c pi t + phi_i)
+// (doc/benchmarks/manufactured_solution.md, prm/manufactured_solution.prm,
+// doc/benchmarks/manufactured_solution.md), standard MPM, MUSL,
 // FLIP, G = 1e-4 (no particle crosses a cell face).
 //
 // 1. The benchmark files carry the right loads: the muparser body force of
@@ -11,12 +12,12 @@
 //    maximum displacement errors fell by 4.02 and 4.02 when this test was
 //    written (0.0241 -> 0.0060 and 0.0340 -> 0.0085 of G), and the study
 //    over h = 1/8 ... 1/64 gives rates 2.03, 2.01, 1.98 (doc/
-//    shape_functions.md). The bound 3.5 on both ratios (a rate of 1.8)
-//    leaves room for round-off and platform differences but fails for an
-//    error of first order: the body force evaluated one step late
-//    (t + dt) gives 0.0058 and 0.0033 (ratio 1.78), smaller at h = 1/16
-//    yet of first order, so the ratio and not the error size is the test.
-//    The errors themselves are bounded 25% above the measured ones.
+//    benchmarks/manufactured_solution.md). The bound 3.5 on both ratios (a rate
+//    of 1.8) leaves room for round-off and platform differences but fails for
+//    an error of first order: the body force evaluated one step late (t + dt)
+//    gives 0.0058 and 0.0033 (ratio 1.78), smaller at h = 1/16 yet of first
+//    order, so the ratio and not the error size is the test. The errors
+//    themselves are bounded 25% above the measured ones.
 #include <mpm/benchmarks/manufactured_solution.h>
 
 #include <random>

@@ -3,14 +3,15 @@
 // Newmark integrator (trapezoidal rule, beta = 1/4, gamma = 1/2) at a step
 // of 0.01 s, 21 times the explicit stability limit of the same grid.
 // With the assumed-stress filter (compliance metric) the period is within
-// 1% of the FE reference T_FE = 0.62322 s (mpm-fe, doc/locking.md): 1.0039
-// T_FE when this test was written, the explicit run's 1.003 plus the
-// trapezoidal rule's period elongation (omega dt)^2 / 12 = 0.1%. Standard
-// MPM is stiffer (0.990 T_FE), as in the explicit run. The rule has no
-// numerical damping, but the grid reset of every step (nodal velocities
-// projected from the particles) loses energy: 0.3% over the first period with
-// the filter at this step (bound 1%). With mass-proportional damping c = 1
-// the energy over a period falls by exp(-c T) (to 0.2%, bound 2%).
+// 1% of the FE reference T_FE = 0.62322 s (mpm-fe,
+// doc/benchmarks/cantilever.md): 1.0039 T_FE when this test was written, the
+// explicit run's 1.003 plus the trapezoidal rule's period elongation (omega
+// dt)^2 / 12 = 0.1%. Standard MPM is stiffer (0.990 T_FE), as in the explicit
+// run. The rule has no numerical damping, but the grid reset of every step
+// (nodal velocities projected from the particles) loses energy: 0.3% over the
+// first period with the filter at this step (bound 1%). With mass-proportional
+// damping c = 1 the energy over a period falls by exp(-c T) (to 0.2%, bound
+// 2%).
 #include "../tests.h"
 
 namespace

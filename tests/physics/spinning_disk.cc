@@ -1,5 +1,6 @@
-// The spinning disk of BENCHMARKS.md section 3 (prm/spinning_disk.prm) on a
-// coarse grid, h = 0.125, 3072 particles.
+// The spinning disk (doc/benchmarks/spinning_disk.md, prm/spinning_disk.prm:
+// a plane-stress disk, a = 1 m, omega = 1 rad/s, in its steady rotating
+// state) on a coarse grid, h = 0.125, 3072 particles.
 //
 // 1. Held still by the equivalent centrifugal body force omega^2 x: no
 //    particle crosses a cell, and the stress must stay at the steady state
@@ -11,7 +12,7 @@
 // 2. Spinning for a quarter turn: angular momentum changed by 0.35% when
 //    this test was written; the 1% bound is a regression bound. The stress
 //    errors are printed, not bounded: standard MPM's cell crossing at the
-//    rim makes them of order sigma0 (see doc/parameters.md, known
+//    rim makes them of order sigma0 (see doc/parameter_file.md, known
 //    problems).
 #include "../tests.h"
 

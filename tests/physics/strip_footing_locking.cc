@@ -5,7 +5,7 @@
 // against Prandtl's limit (2 + pi) c_u: standard MPM locks (q at least
 // 1.4 times the limit, and still rising), theta-bar (Volumetric smoothing
 // = cell, linearized) does not (within 15% of the limit on this grid;
-// doc/implicit.md has the finer grids).
+// doc/benchmarks/strip_footing.md has the finer grids).
 #include <algorithm>
 #include <cmath>
 

@@ -1,9 +1,9 @@
-// The 1D convection correction of one cell (doc/theory.md, section 4.11):
-// the corrected quadrature sum_p V_p (sigma_p + Delta) is the exact
-// integral of the particles' least-squares line over the occupied part of
-// the cell; no shift for particles centred in a full cell or for a
-// constant stress; the seed's two-particle cell; one particle borrowing a
-// neighbour.
+// The 1D convection correction of one cell
+// (doc/theory/convection_correction.md): the corrected quadrature sum_p V_p
+// (sigma_p + Delta) is the exact integral of the particles' least-squares line
+// over the occupied part of the cell; no shift for particles centred in a full
+// cell or for a constant stress; the seed's two-particle cell; one particle
+// borrowing a neighbour.
 #define BOOST_TEST_MODULE convection_correction
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK

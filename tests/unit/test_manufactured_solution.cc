@@ -1,9 +1,11 @@
-// The manufactured solution of BENCHMARKS.md section 8 (doc/theory.md 4.12):
-// its body force is rho0 d2u/dt2 - Div P over rho0 with P the first
-// Piola-Kirchhoff stress of the project's neo-Hookean model (plane strain in
-// 2D), both derivatives taken by finite differences of the displacement, so
-// the hand derivation is checked against the code's material law; its
-// velocity is du/dt; it satisfies the slip walls of the unit square/cube.
+// The manufactured solution u_i = G sin(pi X_i) sin(c pi t + phi_i)
+// (doc/benchmarks/manufactured_solution.md,
+// doc/benchmarks/manufactured_solution.md): its body force is rho0 d2u/dt2 -
+// Div P over rho0 with P the first Piola-Kirchhoff stress of the project's
+// neo-Hookean model (plane strain in 2D), both derivatives taken by finite
+// differences of the displacement, so the hand derivation is checked against
+// the code's material law; its velocity is du/dt; it satisfies the slip walls
+// of the unit square/cube.
 #define BOOST_TEST_MODULE manufactured_solution
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK

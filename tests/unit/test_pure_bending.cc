@@ -1,5 +1,5 @@
-// BENCHMARKS section 4, pure bending of one cell (derivation in
-// doc/theory.md, section 4.9). The Q1 cell gets the nodal displacements of
+// Pure bending of one cell (doc/benchmarks/pure_bending.md; derivation in
+// doc/benchmarks/pure_bending.md). The Q1 cell gets the nodal displacements of
 // an exact pure-bending field; the particles at regular positions get
 // sigma_p = C eps_p from the Q1 strain. Checked against closed forms:
 // - standard MPM: the excess energy over the exact field with the same

@@ -10,10 +10,10 @@ namespace mpm
   namespace benchmarks
   {
     /**
-     * BENCHMARKS.md section 7: Cook's membrane, the panel (0,0), (48,44),
-     * (48,60), (0,44) clamped at x = 0 and loaded by the vertical shear
-     * traction F/16 on its right edge (small strain, linear elastic, so the
-     * displacement is proportional to F). Constants: F, the total load;
+     * Cook's membrane (doc/benchmarks/cooks_membrane.md): the panel (0,0),
+     * (48,44), (48,60), (0,44) clamped at x = 0 and loaded by the vertical
+     * shear traction F/16 on its right edge (small strain, linear elastic, so
+     * the displacement is proportional to F). Constants: F, the total load;
      * uy_ref, the FE reference of u_y at the corner (48,60) for F = 1;
      * uy_ref_mid, the same at the midpoint of the loaded edge (48,52);
      * r_fit, the radius of the fit below.

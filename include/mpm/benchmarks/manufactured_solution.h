@@ -11,11 +11,13 @@ namespace mpm
   namespace benchmarks
   {
     /**
-     * BENCHMARKS.md section 8 (Wallstedt & Guilkey 2008): the unit square or
-     * cube in the motion u_i = G sin(pi X_i) sin(c pi t + phi_i),
+     * Manufactured solution (doc/benchmarks/manufactured_solution.md;
+     * Wallstedt & Guilkey 2008): the unit square or cube in the motion
+     * u_i = G sin(pi X_i) sin(c pi t + phi_i),
      * phi = (0, pi, pi), c = sqrt(E/rho), of a compressible neo-Hookean
-     * solid (plane strain in 2D) held by the body force of doc/theory.md,
-     * section 4.12 (constants G, E, nu, rho). Columns, both divided by G:
+     * solid (plane strain in 2D) held by the body force of
+     * doc/benchmarks/manufactured_solution.md (constants G, E, nu, rho).
+     * Columns, both divided by G:
      * - u_L2_error: sqrt(sum_p V0_p |u_p - u(X_p, t)|^2 / sum_p V0_p),
      *   u_p = x_p - X_p;
      * - u_max_error: max_p |u_p - u(X_p, t)|.

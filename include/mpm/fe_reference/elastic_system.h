@@ -24,7 +24,7 @@ namespace mpm
     /**
      * Small-strain linear elasticity on one mesh: the Q_p displacement
      * formulation or the Taylor-Hood Q_p/Q_(p-1) displacement-pressure
-     * formulation (doc/theory.md, "The FE reference solver"), the
+     * formulation (doc/fe_reference.md, "The equations"), the
      * boundary conditions of the parameter file as constraints, the
      * stiffness matrix, load vector and, for modal analysis, the
      * consistent mass matrix. Serial; solved with UMFPACK.

@@ -7,7 +7,7 @@
 namespace mpm
 {
   /**
-   * The explicit MPM step (doc/theory.md, section 3). One step reads as
+   * The explicit MPM step (doc/theory/explicit_step.md). One step reads as
    * the algorithm, a list of named phases:
    *   USL, MUSL: P2G -> grid update -> G2P [+ MUSL re-map] -> stress
    *              update -> position update;

@@ -17,7 +17,7 @@
 namespace mpm
 {
   /**
-   * The implicit step (doc/implicit.md): each step solves the
+   * The implicit step (doc/theory/implicit.md): each step solves the
    * equilibrium f_int(u) = f_ext(t_n+1) (quasi-static) or the equation of
    * motion M a_n+1(u) + f_int(u) = f_ext(t_n+1) (Newmark, lumped nodal
    * mass) for the nodal displacement increment u by Newton's method, with

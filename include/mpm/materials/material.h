@@ -205,7 +205,8 @@ namespace mpm
        * it: a particle that kept its own J would carry a volume no
        * pressure ever acted on into the next cell's average, and in the
        * water column that grows into a cell-to-cell checkerboard that
-       * stops the run (doc/water_column.md, theory 4.10).
+       * stops the run (doc/benchmarks/water_column.md,
+       * doc/theory/volumetric_smoothing.md).
        */
       virtual bool
       state_is_volume_ratio() const

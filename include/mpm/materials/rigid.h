@@ -9,9 +9,9 @@ namespace mpm
     /**
      * The material of a body that moves as prescribed (`Prescribed
      * velocity` of the body): it carries no stress and adds no stiffness;
-     * the nodes it reaches follow its motion (doc/implicit.md, "Prescribed
-     * motion"). Only its density (the mass that marks those nodes) is
-     * used.
+     * the nodes it reaches follow its motion (doc/theory/implicit.md,
+     * "Prescribed motion"). Only its density (the mass that marks those nodes)
+     * is used.
      */
     class Rigid : public Material
     {

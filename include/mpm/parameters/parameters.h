@@ -17,9 +17,11 @@
 
 /**
  * The parameter file, one struct per subsection. Each struct declares its
- * entries (with documentation and defaults) and reads them back; the
- * user guide in doc/parameters.md follows the same order. The grid's
- * subsections are in grid/grid_parameters.h.
+ * entries (with documentation and defaults) and reads them back. The
+ * documentation strings are the parameter reference of the manual
+ * (generated from `mpm --print-parameters DIM json`); doc/parameter_file.md
+ * describes the file format. The grid's subsections are in
+ * grid/grid_parameters.h.
  */
 namespace mpm
 {
@@ -72,7 +74,8 @@ namespace mpm
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
-    /// The shape-function family of the transfers (doc/theory.md, 9).
+    /// The shape-function family of the transfers
+    /// (doc/theory/grid_and_shape_functions.md).
     struct ShapeFunctions
     {
       shape_functions::Family family = shape_functions::Family::standard;

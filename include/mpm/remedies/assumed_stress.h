@@ -90,7 +90,7 @@ namespace mpm
      * Over a whole cell they do no work on Q1 velocities (so a filled
      * cell's stiffness is Pian-Sumihara's), but they keep a stress that
      * varies along its own direction, as in a bar moving along itself
-     * (doc/theory.md 4.8).
+     * (doc/theory/assumed_stress_filter.md).
      */
     template <int dim>
     class AssumedStressProjection

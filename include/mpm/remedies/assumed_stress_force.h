@@ -20,7 +20,7 @@ namespace mpm
      * midpoint rule) loses the second moment of the linear terms of sigma
      * inside each particle: in a bending beam with n particles through
      * the depth the bending stiffness falls to 1 - 1/n^2 of the exact one
-     * (theory.md, section 4.8).
+     * (doc/theory/assumed_stress_filter.md).
      *
      * Each particle's domain is taken as a product measure: uniform over
      * [c_d - a_d, c_d + a_d] in each reference direction d, with a_d^2 the
@@ -32,7 +32,7 @@ namespace mpm
      * a, b, c in {0, 1, 2}, with E_p[r] = r_c and E_p[r^2] = r_c^2 +
      * (2 a_d)^2 / 3: one outer product of two (three) 3-vectors per
      * particle. From them:
-     * - 2D boxes: the force in closed form (theory.md 4.8): grad N is
+     * - 2D boxes: the force in closed form (doc/theory/assumed_stress_filter.md): grad N is
      *   linear and the field is linear in r, so only M_00, M_10, M_01,
      *   M_20, M_02, M_11 enter;
      * - other cells and 3D: the weights of the lattice {-1, 0, 1}^dim,

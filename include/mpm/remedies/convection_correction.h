@@ -23,7 +23,8 @@ namespace mpm
 
     /**
      * The linear field of one 1D cell, mean + slope (r - r_mean), fitted to
-     * particle samples by V-weighted least squares (doc/theory.md, 4.11).
+     * particle samples by V-weighted least squares
+     * (doc/theory/convection_correction.md).
      */
     struct CellLine
     {

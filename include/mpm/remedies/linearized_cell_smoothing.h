@@ -16,7 +16,7 @@ namespace mpm
      * `Volumetric smoothing = cell` in the implicit step: the smoothed
      * kinematics of a trial increment, exactly those of the explicit
      * stress update (VolumetricSmoothing::update_cell), and their
-     * derivatives with respect to the nodal increment (doc/implicit.md,
+     * derivatives with respect to the nodal increment (doc/theory/implicit.md,
      * section 1). The particles of one body in one cell couple:
      * - rate form (the seed's theta-bar; models that integrate a rate):
      *   h_bar = h + (theta - tr h)/d I, theta = sum V_n tr h / sum V_n, a

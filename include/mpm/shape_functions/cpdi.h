@@ -20,10 +20,10 @@ namespace mpm
      *   S_ip = sum_c w_c N_i(x_c),   grad S_ip = sum_c g_c N_i(x_c),
      *
      * with w_c = (1/V) int M_c dx and g_c = (1/V) int grad M_c dx, M_c the
-     * multilinear corner functions of the domain (doc/theory.md 9.3, 9.4).
-     * sum_c w_c = 1 and sum_c g_c = 0 make S a partition of unity with
-     * gradients summing to zero; sum_c g_c (x) x_c = I reproduces linear
-     * gradients exactly.
+     * multilinear corner functions of the domain
+     * (doc/theory/particle_domain_families.md, "CPDI2"). sum_c w_c = 1 and
+     * sum_c g_c = 0 make S a partition of unity with gradients summing to zero;
+     * sum_c g_c (x) x_c = I reproduces linear gradients exactly.
      */
     template <int dim>
     struct CornerWeights

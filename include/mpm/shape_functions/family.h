@@ -8,7 +8,7 @@ namespace mpm
   {
     /**
      * The ids of the shape-function families of the transfers
-     * (doc/theory.md, section 5). Each family is a type of its own
+     * (doc/theory/explicit_step.md). Each family is a type of its own
      * (standard_family.h, ...) listed in family_registry.h, which gives
      * names, traits and the dispatch from an id to the family's type.
      */

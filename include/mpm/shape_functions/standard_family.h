@@ -21,7 +21,7 @@ namespace mpm
       static constexpr bool domain_follows_deformation = false;
       static constexpr bool tracks_corners             = false;
       /// C_p = sum_i v_i grad N_ip extrapolates the bilinear mode beyond
-      /// the cell and the step is unstable (doc/theory.md, section 9.8).
+      /// the cell and the step is unstable (doc/theory/apic.md).
       static constexpr bool allows_apic = false;
       /// The 1D convection correction is derived for this family.
     };

@@ -16,10 +16,10 @@ namespace mpm
    * viscosity and PIC only take energy out, so a balance that grows
    * beyond Output/Energy balance tolerance (relative to the largest
    * energy seen) is energy created by the model or the scheme
-   * (doc/theory.md, "Energy balance"). The work of a load
-   * is known exactly for constant body forces and tractions (m b .
-   * (x - X)); with a load that varies, or a rigid body with a prescribed
-   * motion, the balance is not watched.
+   * (doc/theory/statistics_and_conservation.md ("Energy balance")). The work of
+   * a load is known exactly for constant body forces and tractions (m b . (x -
+   * X)); with a load that varies, or a rigid body with a prescribed motion, the
+   * balance is not watched.
    */
   template <int dim>
   class EnergyWatch

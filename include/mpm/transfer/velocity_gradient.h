@@ -52,7 +52,7 @@ namespace mpm
 
     /// The centroid sum_i S_ip x_i of a particle's domain as the stencil
     /// sees it: the point APIC's affine velocity is taken about, so that
-    /// sum_i S_ip C_p (x_i - centroid) = 0 (theory.md 9.8).
+    /// sum_i S_ip C_p (x_i - centroid) = 0 (doc/theory/apic.md).
     template <int dim>
     inline dealii::Point<dim>
     stencil_centroid(const shape_functions::Stencil<dim> &stencil,
