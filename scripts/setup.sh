@@ -7,6 +7,7 @@ packages=(
   libdeal.ii-dev libeigen3-dev libboost-test-dev libmuparser-dev
   openmpi-bin libopenmpi-dev
   python3 python3-numpy python3-matplotlib python3-pandas
+  python3-sphinx python3-myst-parser
 )
 missing=()
 for p in "${packages[@]}"; do

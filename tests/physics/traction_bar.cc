@@ -7,8 +7,8 @@
 // J sigma = t0 in every cell: the traction acts on the end face, which has
 // moved past node 1.0 and so acts at the last point of its particle's
 // cell, node 1.0, with the whole t0. (Applied at the particle next to the
-// face, as before 2026-12-02, node 1.0 got only N(x_t) t0 and the last
-// cell's J sigma was 0.95 t0.) Damping 20/s decays every mode like
+// face instead, node 1.0 would get only N(x_t) t0 and the last
+// cell's J sigma would be 0.95 t0.) Damping 20/s decays every mode like
 // exp(-10 t): to 2e-9 after 2 s.
 #include <mpm/particles/particle_layout.h>
 
