@@ -20,7 +20,7 @@ command -v sphinx-build > /dev/null || {
   echo "build_manual: sphinx-build not found; run scripts/setup.sh" >&2; exit 1; }
 
 src="$out/src"
-rm -rf "$src"
+rm -rf "$src" "$out/html"
 mkdir -p "$src/reference" "$out/json"
 cp -r "$root/doc/." "$src/"
 
