@@ -64,8 +64,8 @@ namespace mpm
       << "). Energy is being created: by a rate-form model (linear "
          "elastic) at large strain, which a hyperelastic one (neo-Hookean) "
          "avoids, or by USL's update at nodes of little mass, which MUSL "
-         "and USF avoid (doc/theory/statistics_and_conservation.md (" Energy
-           balance ")).";
+         "and USF avoid (doc/theory/statistics_and_conservation.md, "
+         "\"Energy balance\").";
     if (action == Parameters::Output::EnergyCheck::stop)
       throw RuntimeError(s.str());
     warned = true;
