@@ -36,9 +36,11 @@
 #                   (doc/benchmarks/self_weight_column.md)          1 min
 #   cantilever_newmark scripts/cantilever_newmark_study.sh + plot,
 #                   Newmark with the filter (doc/benchmarks/cantilever.md) 1 min
+#   cantilever_aspect scripts/cantilever_aspect_study.sh: L/H 4 to 40,
+#                   nu 0 to 0.49 (doc/benchmarks/cantilever.md)      8 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
-# Full suite: about 85 minutes. QUICK=1 (coarse grids, short runs, few
+# Full suite: about 93 minutes. QUICK=1 (coarse grids, short runs, few
 # variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.
@@ -50,7 +52,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit column_implicit cantilever_newmark recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit column_implicit cantilever_newmark cantilever_aspect recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -161,6 +163,15 @@ part_thick_cylinder_implicit() {
 part_cantilever_newmark() {
   "$root/scripts/cantilever_newmark_study.sh" "$res/cantilever-newmark" &&
     $py "$root/scripts/plot_cantilever_newmark.py" "$res/cantilever-newmark/table.txt" "$figs/cantilever_newmark.png"
+}
+
+part_cantilever_aspect() {
+  if [ "$quick" = 1 ]; then
+    JOBS=1 RATIOS=4 NUS=0.3 VARIANTS="standard filter-compliance" \
+      "$root/scripts/cantilever_aspect_study.sh" "$res/cantilever-aspect"
+  else
+    JOBS=1 "$root/scripts/cantilever_aspect_study.sh" "$res/cantilever-aspect"
+  fi
 }
 
 part_strip_footing() {
