@@ -20,20 +20,13 @@ import re
 import sys
 
 
-def demangle(name):
-    """ParameterHandler writes names with _XX hex escapes for characters
-    that are not alphanumeric; undo them."""
-    return re.sub(r"_([0-9a-fA-F]{2})", lambda m: chr(int(m.group(1), 16)),
-                  name)
-
-
 def walk(tree, path, entries, order):
     """Collect (path, entry) pairs in the order they appear in the JSON
     (KeepDeclarationOrder keeps the declaration order)."""
     for key, node in tree.items():
         if not isinstance(node, dict):
             continue
-        name = demangle(key)
+        name = key
         here = path + (name,)
         if "value" in node and "documentation" in node:
             entries[here] = node

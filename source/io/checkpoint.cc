@@ -464,9 +464,9 @@ namespace mpm
                  " in the parameter file but " + describe(saved, k) +
                  " in the checkpoint '" + checkpoint_file +
                  "'; a restart must keep every parameter except Output, "
-                 "Checkpointing, Time stepping/End time and Maximum number "
-                 "of steps (or set Checkpointing/Resume computation = "
-                 "false to start anew)";
+                 "Checkpointing, Load balancing, Time stepping/End time "
+                 "and Maximum number of steps (or set Checkpointing/Resume "
+                 "computation = false to start anew)";
         }
       return "";
     }

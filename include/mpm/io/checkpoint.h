@@ -111,8 +111,8 @@ namespace mpm
     /**
      * Whether a parameter (its path "Subsection/Entry" as in the PRM text)
      * must be the same on restart: everything except Output/...,
-     * Checkpointing/..., Time stepping/End time and Time
-     * stepping/Maximum number of steps.
+     * Checkpointing/..., Load balancing/..., Time stepping/End time and
+     * Time stepping/Maximum number of steps.
      */
     bool
     is_critical(const std::string &path);
