@@ -21,20 +21,18 @@ import sys
 
 
 def walk(tree, path, entries, order):
-    """Collect (path, entry) pairs in the order they appear in the JSON
-    (KeepDeclarationOrder keeps the declaration order)."""
+    """Collect entries by path, and every path (subsection or entry) once,
+    in the order of the JSON (KeepDeclarationOrder keeps the declaration
+    order)."""
     for key, node in tree.items():
         if not isinstance(node, dict):
             continue
-        name = key
-        here = path + (name,)
+        here = path + (key,)
+        if here not in order:
+            order.append(here)
         if "value" in node and "documentation" in node:
             entries[here] = node
-            if here not in order:
-                order.append(here)
         else:
-            if here not in order:
-                order.append(here)
             walk(node, here, entries, order)
 
 
@@ -96,21 +94,13 @@ def per_dimension(values, dims, fmt):
 def write(per_dim, order, title, intro, out):
     dims = sorted(per_dim)
     lines = [f"# {title}", ""] + ([intro, ""] if intro else [])
-    sections_seen = set()
     for path in order:
         present = [d for d in dims if path in per_dim[d]]
         if not present:
-            # a subsection: a heading (deeper levels as bold lines, since
-            # the manual's headings stop at level 3 for anchors)
-            if path in sections_seen:
-                continue
-            sections_seen.add(path)
-            depth = len(path)
-            label = " / ".join(path)
-            if depth == 1:
-                lines += [f"## {label}", ""]
-            else:
-                lines += [f"### {label}", ""]
+            # a subsection: a heading, level 2 at the top and level 3 below
+            # (the full path names it, so deeper levels need no level 4)
+            level = "##" if len(path) == 1 else "###"
+            lines += [f"{level} {' / '.join(path)}", ""]
             continue
         entry = {d: per_dim[d][path] for d in present}
         name = path[-1]

@@ -7,6 +7,7 @@
 
 #include <mpm/fe_reference/parameters.h>
 #include <mpm/fe_reference/refinement_study.h>
+#include <mpm/parameters/listing_style.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/utilities/input_error.h>
 
@@ -111,23 +112,19 @@ main(int argc, char **argv)
         }
       else if (a == "--print-parameters")
         {
-          const std::string d = (i + 1 < argc) ? argv[i + 1] : "2";
-          const std::string f = (i + 2 < argc) ? argv[i + 2] : "prm";
-          if (f != "prm" && f != "json")
+          const std::string d     = (i + 1 < argc) ? argv[i + 1] : "2";
+          const std::string f     = (i + 2 < argc) ? argv[i + 2] : "prm";
+          const auto        style = mpm::Parameters::listing_style(f);
+          if (!style)
             {
               std::cerr << "mpm-fe: --print-parameters: unknown format '" << f
                         << "' (prm or json)\n";
               return 1;
             }
-          const auto style =
-            f == "json" ? dealii::ParameterHandler::OutputStyle(
-                            dealii::ParameterHandler::JSON |
-                            dealii::ParameterHandler::KeepDeclarationOrder) :
-                          dealii::ParameterHandler::PRM;
           if (d == "3")
-            print_parameters<3>(style);
+            print_parameters<3>(*style);
           else
-            print_parameters<2>(style);
+            print_parameters<2>(*style);
           return 0;
         }
       else if (!a.empty() && a[0] == '-')

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <mpm/parameters/listing_style.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/solver/resource_estimate.h>
 #include <mpm/solver/simulator.h>
@@ -132,28 +133,24 @@ main(int argc, char **argv)
         }
       else if (a == "--print-parameters")
         {
-          const std::string d = (i + 1 < argc) ? argv[i + 1] : "2";
-          const std::string f = (i + 2 < argc) ? argv[i + 2] : "prm";
-          if (f != "prm" && f != "json")
+          const std::string d     = (i + 1 < argc) ? argv[i + 1] : "2";
+          const std::string f     = (i + 2 < argc) ? argv[i + 2] : "prm";
+          const auto        style = mpm::Parameters::listing_style(f);
+          if (!style)
             {
               if (root)
                 std::cerr << "mpm: --print-parameters: unknown format '" << f
                           << "' (prm or json)\n";
               return 1;
             }
-          const auto style =
-            f == "json" ? dealii::ParameterHandler::OutputStyle(
-                            dealii::ParameterHandler::JSON |
-                            dealii::ParameterHandler::KeepDeclarationOrder) :
-                          dealii::ParameterHandler::PRM;
           if (root)
             {
               if (d == "1")
-                print_parameters<1>(style);
+                print_parameters<1>(*style);
               else if (d == "3")
-                print_parameters<3>(style);
+                print_parameters<3>(*style);
               else
-                print_parameters<2>(style);
+                print_parameters<2>(*style);
             }
           return 0;
         }
