@@ -37,10 +37,11 @@
 #   cantilever_newmark scripts/cantilever_newmark_study.sh + plot,
 #                   Newmark with the filter (doc/benchmarks/cantilever.md) 1 min
 #   cantilever_aspect scripts/cantilever_aspect_study.sh: L/H 4 to 40,
-#                   nu 0 to 0.49 (doc/benchmarks/cantilever.md)      8 min
+#                   nu 0 to 0.49, and in 3D L/H 4 to 20
+#                   (doc/benchmarks/cantilever.md)        8 + 86 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
-# Full suite: about 93 minutes. QUICK=1 (coarse grids, short runs, few
+# Full suite: about 3 hours. QUICK=1 (coarse grids, short runs, few
 # variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.
@@ -170,7 +171,9 @@ part_cantilever_aspect() {
     JOBS=1 RATIOS=4 NUS=0.3 VARIANTS="standard filter-compliance" \
       "$root/scripts/cantilever_aspect_study.sh" "$res/cantilever-aspect"
   else
-    JOBS=1 "$root/scripts/cantilever_aspect_study.sh" "$res/cantilever-aspect"
+    JOBS=1 "$root/scripts/cantilever_aspect_study.sh" "$res/cantilever-aspect" &&
+      DIM=3 RATIOS="4 10 20" JOBS=1 \
+        "$root/scripts/cantilever_aspect_study.sh" "$res/cantilever-aspect-3d"
   fi
 }
 

@@ -24,11 +24,21 @@ neighbours) and its checkerboard-mode part (RMS over 2x2 blocks of
 (p00 - p10 - p01 + p11)/4, zero for any bilinear field), both in units of
 rho g 2a, as means over T <= 3.4 and at T = 2.
 
+With --front it prints instead where the front's error comes from: the
+mean of Z - data over the four early points (T <= 1.43, the collapse of
+the deep column) and over the eight late ones (T >= 2.2, the thin
+spreading layer), the front speed dZ/dT fitted over the late points
+(data: 1.38), and, from the particle files, the RMS of fronts tracked by
+depth instead of by the foremost particle: the furthest x where the
+layer is at least a/40, a/20, a/10 or a/5 deep (the particles' area in
+columns a/20 wide), each with its best time shift.
+
 With --height-to TAU it prints instead the RMS of H over the height
 points with tau <= TAU only (for runs that end early, e.g. the fine
 grids to tau = 2.5) and the differences at tau = 1.28, 1.84 and 2.45.
 
 Usage: water_column_rms.py [--check-csv] [--c SOUND_SPEED] RUN_DIR...
+       water_column_rms.py --front RUN_DIR...
        water_column_rms.py --modes RUN_DIR...
        water_column_rms.py --height-to TAU RUN_DIR..."""
 import glob
@@ -137,7 +147,69 @@ def checkerboard_modes(run, s):
     return r[:, 1].mean(), r[:, 2].mean(), r[k, 1], r[k, 2]
 
 
+EARLY, LATE = T_DATA <= 1.43 + 1e-12, T_DATA >= 2.2 - 1e-12
+DEPTHS, COLUMN = (A / 40, A / 20, A / 10, A / 5), A / 20
+
+
+def front_speed(T, Z):
+    """dZ/dT, least squares over the late data times."""
+    return np.polyfit(T[LATE], Z[LATE], 1)[0]
+
+
+def depth_fronts(f):
+    """For each depth of DEPTHS, the furthest x where the layer is at least
+    that deep: the particles' area summed in columns COLUMN wide from the
+    wall, its depth (area over width) interpolated linearly between
+    column centres."""
+    d = pd.read_csv(f)
+    n = int(np.ceil(d.x.max() / COLUMN)) + 1
+    depth = np.bincount((d.x.values / COLUMN).astype(int),
+                        weights=d.volume.values, minlength=n) / COLUMN
+    centre = (np.arange(len(depth)) + 0.5) * COLUMN
+    fronts = []
+    for h in DEPTHS:
+        i = np.nonzero(depth >= h)[0][-1]
+        if i + 1 == len(depth):
+            fronts.append(centre[i])
+        else:  # where the depth falls below h between centres i and i + 1
+            fronts.append(centre[i] + COLUMN * (depth[i] - h) / (depth[i] - depth[i + 1]))
+    return fronts
+
+
+def front_sources(run, s):
+    """The early and late mean errors and the late speed of the tracked
+    front; then, for each depth of DEPTHS, the RMS, best shift and RMS at
+    that shift of the front tracked by depth (nan where the run has no
+    particle files)."""
+    Z = np.interp(T_DATA, s["T"], s["Z"])
+    row = [np.mean(Z[EARLY] - Z_DATA[EARLY]), np.mean(Z[LATE] - Z_DATA[LATE]),
+           front_speed(T_DATA, Z)]
+    files = sorted(glob.glob(f"{run}/particles-*.csv"))
+    if not files:
+        return row + [np.nan] * 3 * len(DEPTHS)
+    t = s["T"].values[:len(files)]
+    keep = t <= T_DATA[-1] + 1.1
+    fronts = np.array([depth_fronts(f) for f, k in zip(files, keep) if k]) / A
+    for j in range(len(DEPTHS)):
+        tracked = pd.DataFrame({"T": t[keep], "Z": fronts[:, j]})
+        row += [rms_front(tracked), *best_shift(tracked)]
+    return row
+
+
 def main(argv):
+    if "--front" in argv:
+        print(f"| run | Z - data, T <= 1.43 | Z - data, T >= 2.2 | dZ/dT, T >= 2.2 "
+              f"(data {front_speed(T_DATA, Z_DATA):.2f}) | "
+              + " | ".join(f"depth a/{A / h:.0f}: RMS Z (best dT: RMS)" for h in DEPTHS)
+              + " |")
+        print("|---" * (4 + len(DEPTHS)) + "|")
+        for run in [a for a in argv if a != "--front"]:
+            r = front_sources(run, statistics(run))
+            depth = [f"{r[k]:.3f} ({r[k + 1]:+.3f}: {r[k + 2]:.3f})"
+                     for k in range(3, len(r), 3)]
+            print(f"| {run.rstrip('/').split('/')[-1]} | {r[0]:+.3f} | {r[1]:+.3f} "
+                  f"| {r[2]:.2f} | " + " | ".join(depth) + " |")
+        return
     if "--height-to" in argv:
         i = argv.index("--height-to")
         tau_max = float(argv[i + 1])

@@ -1,3 +1,4 @@
+#include <mpm/remedies/assumed_stress_remedy.h>
 #include <mpm/solver/energy_watch.h>
 #include <mpm/utilities/input_error.h>
 
@@ -17,17 +18,27 @@ namespace mpm
     if (action == Check::none)
       reason = "Output/Energy balance check = none";
     for (const auto &body : bodies)
-      if (reason.empty())
-        {
-          const std::string name =
-            "Bodies/" + Parameters::body_section(body.index);
-          if (body.is_rigid())
-            reason = name + " moves as prescribed (its work is not known)";
-          else if (!body.body_force.is_constant())
-            reason = name + "/Body force varies (its work is not known)";
-          else if (body.has_traction() && !body.traction.is_constant())
-            reason = name + "/Traction varies (its work is not known)";
-        }
+      {
+        const std::string name =
+          "Bodies/" + Parameters::body_section(body.index);
+        if (reason.empty())
+          {
+            if (body.is_rigid())
+              reason = name + " moves as prescribed (its work is not known)";
+            else if (!body.body_force.is_constant())
+              reason = name + "/Body force varies (its work is not known)";
+            else if (body.has_traction() && !body.traction.is_constant())
+              reason = name + "/Traction varies (its work is not known)";
+          }
+        // The mass metric's projection of a locked pressure has deviatoric
+        // parts, which carry far more energy per unit of stress.
+        const auto *filter =
+          body.prm.locking_remedies
+            .template find<remedies::AssumedStressSettings>();
+        if (mass_filter.empty() && filter && filter->write_back &&
+            filter->metric == remedies::Metric::mass)
+          mass_filter = name;
+      }
   }
 
   template <int dim>
@@ -64,8 +75,13 @@ namespace mpm
       << "). Energy is being created: by a rate-form model (linear "
          "elastic) at large strain, which a hyperelastic one (neo-Hookean) "
          "avoids, or by USL's update at nodes of little mass, which MUSL "
-         "and USF avoid (doc/theory/statistics_and_conservation.md, "
-         "\"Energy balance\").";
+         "and USF avoid";
+    if (!mass_filter.empty())
+      s << ", or by the assumed-stress filter of " << mass_filter
+        << " with Filter metric = mass, whose filtered stress in nearly "
+           "incompressible material has more strain energy than the "
+           "particles' own (Filter metric = compliance avoids it)";
+    s << " (doc/theory/statistics_and_conservation.md, \"Energy balance\").";
     if (action == Parameters::Output::EnergyCheck::stop)
       throw RuntimeError(s.str());
     warned = true;

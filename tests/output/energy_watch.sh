@@ -5,13 +5,15 @@
 # 2. stop: status 2, the same message as the error;
 # 3. the same disks neo-Hookean: no warning (a hyperelastic model keeps
 #    the energy to 0.1%);
-# 4. a ramped body force: "energy balance not watched", naming the body.
+# 4. a ramped body force: "energy balance not watched", naming the body;
+# 5. a 3D beam at nu = 0.49 with the mass-metric filter: the warning names
+#    the filter of Bodies/Body 0 as a cause; the compliance metric: none.
 set -u
 mpm=$1
 here=$(cd "$(dirname "$0")" && pwd)
 fail() { echo "FAIL: $*"; exit 1; }
 case=$here/colliding_disks_fast.prm
-rm -rf warn stop neo ramp && mkdir warn stop neo ramp
+rm -rf warn stop neo ramp mass compliance && mkdir warn stop neo ramp mass compliance
 
 (cd warn && "$mpm" "$case" > out.txt 2> err.txt) || { cat warn/err.txt; fail "warn: non-zero status"; }
 [ "$(grep -c 'mpm: warning:' warn/err.txt)" = 1 ] || { cat warn/err.txt; fail "warn: expected one warning"; }
@@ -37,3 +39,14 @@ printf 'include %s\nsubsection Bodies\n  subsection Body 1\n    set Body force =
 grep -q "energy balance not watched: Bodies/Body 1/Body force varies" ramp/out.txt \
   || { cat ramp/out.txt; fail "ramp: the header does not say why the balance is not watched"; }
 echo "OK   ramped load: not watched, the body named"
+
+beam=$here/cantilever_3d_mass_filter.prm
+(cd mass && "$mpm" "$beam" > out.txt 2> err.txt) || { cat mass/err.txt; fail "mass filter: non-zero status"; }
+grep -q "mpm: warning: at step .*or by the assumed-stress filter of Bodies/Body 0 with Filter metric = mass" mass/err.txt \
+  || { cat mass/err.txt; fail "mass filter: the warning does not name the filter"; }
+echo "OK   mass-metric filter named: $(grep -o 'or by the assumed-stress filter of [^,]*' mass/err.txt)"
+
+sed 's/Filter metric = mass/Filter metric = compliance/' "$beam" > compliance/case.prm
+(cd compliance && "$mpm" case.prm > out.txt 2> err.txt) || { cat compliance/err.txt; fail "compliance filter: non-zero status"; }
+! grep -q "warning" compliance/err.txt || { cat compliance/err.txt; fail "compliance filter: unexpected warning"; }
+echo "OK   compliance-metric filter: no warning"

@@ -51,8 +51,11 @@ namespace mpm
     Parameters::Output::EnergyCheck action;
     double                          tolerance;
     std::string                     reason;
-    bool                            started = false, warned = false;
-    double                          initial_balance = 0, scale = 0;
-    unsigned int                    initial_step = 0;
+    /// The first body whose filtered stress (mass metric, written back)
+    /// sets its strain energy ("" if none): named as a possible cause.
+    std::string  mass_filter;
+    bool         started = false, warned = false;
+    double       initial_balance = 0, scale = 0;
+    unsigned int initial_step = 0;
   };
 } // namespace mpm
