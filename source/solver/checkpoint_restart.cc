@@ -7,6 +7,7 @@
 
 #include <mpm/io/checkpoint.h>
 #include <mpm/io/disk_space.h>
+#include <mpm/io/failed_write_abort.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/wall_clock.h>
@@ -351,23 +352,24 @@ namespace mpm
                                   (state.layout.n_properties() + 2 * dim + 2);
     const double cell_bytes =
       64. * state.background.triangulation().n_global_active_cells();
+    // What stays usable if this checkpoint fails (rank 0 knows).
+    std::string keep;
     on_root<RuntimeError>(comm, prefix, [&]() {
       const std::string latest = checkpoint::latest(out.directory);
-      std::error_code   no_file;
-      const auto        statistics_size =
+      keep                     = latest.empty() ?
+                                   "No checkpoint was written; the output so far is kept." :
+                                   "The latest checkpoint, " + latest +
+                 ", is intact: make room and continue with mpm --resume.";
+      std::error_code no_file;
+      const auto      statistics_size =
         std::filesystem::file_size(out.directory + "/statistics.txt", no_file);
       double needed = particle_bytes + cell_bytes + 16384. +
                       (no_file ? 0. : double(statistics_size));
       if (!latest.empty())
         needed = std::max<double>(needed, checkpoint::folder_size(latest));
-      require_space(
-        out.directory,
-        1.1 * needed,
-        latest.empty() ?
-          "No checkpoint was written; the output so far is kept." :
-          "The latest checkpoint, " + latest +
-            ", is intact: make room and continue with mpm --resume.");
+      require_space(out.directory, 1.1 * needed, keep);
     });
+    keep = Utilities::MPI::broadcast(comm, keep, 0);
 
     // A new folder; the latest complete checkpoint stays as it is.
     std::string folder, problem;
@@ -377,31 +379,56 @@ namespace mpm
     folder = Utilities::MPI::broadcast(comm, folder, 0);
 
     // Grid and particles (collective in 2D/3D: p4est writes one file for
-    // all ranks, the particles travel as data attached to the cells).
+    // all ranks, the particles travel as data attached to the cells). A
+    // disk can still fill during the write (another process, or no free
+    // file entries): the failure names the folder and the free space.
+    const auto cannot_write = [&](const std::string &what) {
+      return "cannot write " + what + " in '" + folder + "'" +
+             free_space_note(out.directory) + ": ";
+    };
     if constexpr (dim > 1)
       {
-        state.particle_handler.prepare_for_serialization();
-        dynamic_cast<parallel::distributed::Triangulation<dim> &>(
-          state.background.triangulation())
-          .save(folder + "/triangulation");
+        try
+          {
+            state.particle_handler.prepare_for_serialization();
+            // p4est aborts on a failed write of its own file.
+            const FailedWriteAbort guard(
+              "mpm: the simulation stopped " + prefix +
+              "cannot write the grid in '" + folder +
+              "': p4est stopped on a failed write, from a full disk or a "
+              "file system without free file entries" +
+              free_space_note(out.directory) + ". " + keep +
+              "\nOutput written before this point is kept.\n");
+            dynamic_cast<parallel::distributed::Triangulation<dim> &>(
+              state.background.triangulation())
+              .save(folder + "/triangulation");
+          }
+        catch (const std::exception &e)
+          {
+            problem = cannot_write("the grid and particles") +
+                      clean_dealii_message(e.what());
+          }
       }
     else
-      try
-        {
-          std::ofstream out(folder + "/triangulation.1d", std::ios::binary);
+      {
+        try
           {
-            boost::archive::binary_oarchive archive(out);
-            state.background.triangulation().save(archive, 0);
+            std::ofstream out(folder + "/triangulation.1d", std::ios::binary);
+            {
+              boost::archive::binary_oarchive archive(out);
+              state.background.triangulation().save(archive, 0);
+            }
+            if (!out)
+              throw std::runtime_error("cannot write '" + folder +
+                                       "/triangulation.1d'");
+            write_particles_1d(folder + "/particles.1d",
+                               state.particle_handler);
           }
-          if (!out)
-            throw std::runtime_error("cannot write '" + folder +
-                                     "/triangulation.1d'");
-          write_particles_1d(folder + "/particles.1d", state.particle_handler);
-        }
-      catch (const std::exception &e)
-        {
-          problem = e.what();
-        }
+        catch (const std::exception &e)
+          {
+            problem = cannot_write("the grid and particles") + e.what();
+          }
+      }
 
     if (kill_requested(n_checkpoints_written))
       {
@@ -436,14 +463,19 @@ namespace mpm
         {
           if constexpr (dim > 1)
             {
-              std::ofstream f(folder + "/particle_handler.txt");
-              {
-                boost::archive::text_oarchive archive(f);
-                archive << state.particle_handler;
-              }
+              const std::string file = folder + "/particle_handler.txt";
+              std::ofstream     f(file);
+              try
+                {
+                  boost::archive::text_oarchive archive(f);
+                  archive << state.particle_handler;
+                }
+              catch (const std::exception &e)
+                {
+                  throw std::runtime_error("'" + file + "': " + e.what());
+                }
               if (!f)
-                throw std::runtime_error("cannot write '" + folder +
-                                         "/particle_handler.txt'");
+                throw std::runtime_error("cannot write '" + file + "'");
             }
           std::ostringstream state_text;
           s.write(state_text);
@@ -457,15 +489,18 @@ namespace mpm
         }
       catch (const std::exception &e)
         {
-          problem = e.what();
+          problem = cannot_write("the checkpoint files") +
+                    clean_dealii_message(e.what());
         }
     // Every rank has written its part when every rank gets here.
+    if (!problem.empty())
+      problem += (problem.back() == '.' ? " " : ". ") + keep;
     throw_if_any<RuntimeError>(comm, prefix, problem);
 
     // The commit: latest.txt now names the new folder; then the older
     // folders go.
     unsigned long long bytes = 0;
-    on_root<RuntimeError>(comm, prefix, [&]() {
+    on_root<RuntimeError>(comm, prefix + cannot_write("the manifest"), [&]() {
       checkpoint::commit(out.directory, folder);
       bytes = checkpoint::folder_size(folder);
     });

@@ -70,29 +70,45 @@ namespace mpm
                                                  state.layout,
                                                  history_names);
     statistics_file = std::make_unique<StatisticsFile<dim>>();
-    on_root<InputError>(comm, "", [&]() {
-      // A restart continues the statistics file of the checkpoint: the
-      // rows written after it (by the interrupted run) are dropped.
-      if (resumed())
-        statistics_file->resume(out.directory + "/statistics.txt",
-                                checkpoint::read_file(resume_folder +
-                                                      "/statistics.txt"));
-      else
-        {
-          // the integrator's columns (its solver's iterations), then the
-          // benchmark's measures
-          auto columns = integrator->statistics_columns();
-          if (benchmark)
-            for (const auto &c : benchmark->columns())
-              columns.push_back(c);
-          statistics_file->open(out.directory + "/statistics.txt", columns);
-        }
-      // Every entry of this run (defaults included, no comments), so
-      // that scripts/recompute_measures.py finds the benchmark, its
-      // constants and the grid beside the output.
-      prm.print_parameters(out.directory + "/parameters.prm",
-                           ParameterHandler::ShortPRM);
-    });
+    // A folder that exists but cannot take the files (a full disk) is a
+    // failed write like any later one: status 2, the free space named.
+    on_root<RuntimeError>(
+      comm,
+      "while opening the output: cannot write the statistics and parameter "
+      "files in '" +
+        out.directory + "'" + free_space_note(out.directory) + ": ",
+      [&]() {
+        // A restart continues the statistics file of the checkpoint: the
+        // rows written after it (by the interrupted run) are dropped.
+        if (resumed())
+          statistics_file->resume(out.directory + "/statistics.txt",
+                                  checkpoint::read_file(resume_folder +
+                                                        "/statistics.txt"));
+        else
+          {
+            // the integrator's columns (its solver's iterations), then the
+            // benchmark's measures
+            auto columns = integrator->statistics_columns();
+            if (benchmark)
+              for (const auto &c : benchmark->columns())
+                columns.push_back(c);
+            statistics_file->open(out.directory + "/statistics.txt", columns);
+          }
+        // Every entry of this run (defaults included, no comments), so
+        // that scripts/recompute_measures.py finds the benchmark, its
+        // constants and the grid beside the output.
+        const std::string parameters = out.directory + "/parameters.prm";
+        try
+          {
+            prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+          }
+        catch (const std::exception &)
+          {
+            // deal.II's text here is a generic list of I/O causes
+            throw std::runtime_error("'" + parameters +
+                                     "' could not be written");
+          }
+      });
 
     if (resumed())
       {

@@ -13,6 +13,8 @@
 #    checkpoint and ends with ref's statistics, byte for byte.
 # 4. With vtu output into a file system of 40 kB: status 2, the output
 #    directory and its free space named.
+# 5. File systems with few file entries, so that the disk fills during a
+#    checkpoint (p4est's write included): status 2 every time.
 # Needs tmpfs mounts (root): skipped with status 77 where not permitted.
 set -u
 mpm=$1 case=$2 np=$3
@@ -88,3 +90,28 @@ rc=$?
 grep -q "cannot write .* in 'results' (the file system of 'results' has" "$disk/screen.txt" \
   || { cat "$disk/screen.txt"; fail "vtu on a full disk: the message does not name the directory and its free space"; }
 echo "OK   output on a full disk: status 2, $(grep -o "cannot write [^:]*" "$disk/screen.txt" | head -1)"
+
+# 5. A disk that fills during the checkpoint, after the check: a file
+#    system with room for bytes but few file entries, swept over the
+#    number of entries so that each file of the output and the checkpoint
+#    is the first to fail in one of the runs, p4est's own file among them
+#    in 2D. Every run ends with status 2 and names the folder (never a
+#    core dump from p4est's abort).
+seen_p4est=0
+for entries in 5 6 7 8 9 10 11 12 13 14 15 16; do
+  mount -t tmpfs -o size=20m,nr_inodes=$entries tmpfs "$disk" || fail "mount"
+  cp ref/case.prm "$disk/"
+  (cd "$disk" && run_mpm case.prm > screen.txt 2>&1)
+  rc=$?
+  [ "$rc" = 2 ] || { cat "$disk/screen.txt"; fail "$entries file entries: exit status $rc, expected 2"; }
+  grep -q "mpm: the simulation stopped while \(opening the output\|writing the checkpoint of step [0-9]*\): .*\(results\|No space\)" "$disk/screen.txt" \
+    || { cat "$disk/screen.txt"; fail "$entries file entries: the message names no folder"; }
+  grep -q "p4est stopped on a failed write" "$disk/screen.txt" && seen_p4est=1
+  umount "$disk"
+done
+if grep -q "dimension 1" ref/screen.txt; then
+  echo "OK   file entries run out (5 to 16): status 2 each time"
+else
+  [ "$seen_p4est" = 1 ] || fail "no run of the sweep failed inside p4est's write: widen the sweep"
+  echo "OK   file entries run out (5 to 16): status 2 each time, once inside p4est's write"
+fi
