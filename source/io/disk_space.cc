@@ -43,6 +43,15 @@ namespace mpm
            " free)";
   }
 
+  std::string
+  cannot_write(const std::string &what,
+               const std::string &folder,
+               const std::string &space_of)
+  {
+    return "cannot write " + what + " in '" + folder + "'" +
+           free_space_note(space_of.empty() ? folder : space_of) + ": ";
+  }
+
   void
   require_space(const std::string &path,
                 const double       needed_bytes,

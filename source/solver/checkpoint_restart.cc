@@ -356,10 +356,11 @@ namespace mpm
     std::string keep;
     on_root<RuntimeError>(comm, prefix, [&]() {
       const std::string latest = checkpoint::latest(out.directory);
-      keep                     = latest.empty() ?
-                                   "No checkpoint was written; the output so far is kept." :
-                                   "The latest checkpoint, " + latest +
-                 ", is intact: make room and continue with mpm --resume.";
+      if (latest.empty())
+        keep = "No checkpoint was written; the output so far is kept.";
+      else
+        keep = "The latest checkpoint, " + latest +
+               ", is intact: make room and continue with mpm --resume.";
       std::error_code no_file;
       const auto      statistics_size =
         std::filesystem::file_size(out.directory + "/statistics.txt", no_file);
@@ -382,10 +383,6 @@ namespace mpm
     // all ranks, the particles travel as data attached to the cells). A
     // disk can still fill during the write (another process, or no free
     // file entries): the failure names the folder and the free space.
-    const auto cannot_write = [&](const std::string &what) {
-      return "cannot write " + what + " in '" + folder + "'" +
-             free_space_note(out.directory) + ": ";
-    };
     if constexpr (dim > 1)
       {
         try
@@ -394,19 +391,19 @@ namespace mpm
             // p4est aborts on a failed write of its own file.
             const FailedWriteAbort guard(
               "mpm: the simulation stopped " + prefix +
-              "cannot write the grid in '" + folder +
-              "': p4est stopped on a failed write, from a full disk or a "
-              "file system without free file entries" +
-              free_space_note(out.directory) + ". " + keep +
-              "\nOutput written before this point is kept.\n");
+              cannot_write("the grid", folder, out.directory) +
+              "p4est stopped on a failed write, from a full disk or a "
+              "file system without free file entries. " +
+              keep + "\nOutput written before this point is kept.\n");
             dynamic_cast<parallel::distributed::Triangulation<dim> &>(
               state.background.triangulation())
               .save(folder + "/triangulation");
           }
         catch (const std::exception &e)
           {
-            problem = cannot_write("the grid and particles") +
-                      clean_dealii_message(e.what());
+            problem =
+              cannot_write("the grid and particles", folder, out.directory) +
+              clean_dealii_message(e.what());
           }
       }
     else
@@ -426,7 +423,9 @@ namespace mpm
           }
         catch (const std::exception &e)
           {
-            problem = cannot_write("the grid and particles") + e.what();
+            problem =
+              cannot_write("the grid and particles", folder, out.directory) +
+              e.what();
           }
       }
 
@@ -489,8 +488,9 @@ namespace mpm
         }
       catch (const std::exception &e)
         {
-          problem = cannot_write("the checkpoint files") +
-                    clean_dealii_message(e.what());
+          problem =
+            cannot_write("the checkpoint files", folder, out.directory) +
+            clean_dealii_message(e.what());
         }
     // Every rank has written its part when every rank gets here.
     if (!problem.empty())
@@ -500,10 +500,13 @@ namespace mpm
     // The commit: latest.txt now names the new folder; then the older
     // folders go.
     unsigned long long bytes = 0;
-    on_root<RuntimeError>(comm, prefix + cannot_write("the manifest"), [&]() {
-      checkpoint::commit(out.directory, folder);
-      bytes = checkpoint::folder_size(folder);
-    });
+    on_root<RuntimeError>(comm,
+                          prefix +
+                            cannot_write("the manifest", folder, out.directory),
+                          [&]() {
+                            checkpoint::commit(out.directory, folder);
+                            bytes = checkpoint::folder_size(folder);
+                          });
     ++n_checkpoints_written;
     last_checkpoint_wall = wall_seconds();
     pcout << "  checkpoint: step " << state.current_step

@@ -74,9 +74,8 @@ namespace mpm
     // failed write like any later one: status 2, the free space named.
     on_root<RuntimeError>(
       comm,
-      "while opening the output: cannot write the statistics and parameter "
-      "files in '" +
-        out.directory + "'" + free_space_note(out.directory) + ": ",
+      "while opening the output: " +
+        cannot_write("the statistics and parameter files", out.directory),
       [&]() {
         // A restart continues the statistics file of the checkpoint: the
         // rows written after it (by the interrupted run) are dropped.
@@ -170,8 +169,7 @@ namespace mpm
     auto         attempt = [&](const std::string &what, const auto &write) {
       const std::string p = problem_of(write);
       if (!p.empty())
-        problem.record("cannot write " + what + " in '" + out.directory + "'" +
-                       free_space_note(out.directory) + ": " +
+        problem.record(cannot_write(what, out.directory) +
                        clean_dealii_message(p));
     };
     attempt("statistics.txt", [&]() {

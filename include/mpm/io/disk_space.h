@@ -19,6 +19,16 @@ namespace mpm
   free_space_note(const std::string &path);
 
   /**
+   * "cannot write WHAT in 'FOLDER' (the file system of 'SPACE_OF' has 12.5
+   * MB free): ", the start of every message of a failed write; the free
+   * space is that of @p space_of, or of @p folder if it is "".
+   */
+  std::string
+  cannot_write(const std::string &what,
+               const std::string &folder,
+               const std::string &space_of = "");
+
+  /**
    * A RuntimeError unless @p needed_bytes fit into the file system of
    * @p path; @p keep, appended to the message, says what stays intact.
    */
