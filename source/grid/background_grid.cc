@@ -65,6 +65,7 @@ namespace mpm
     n_ghost = partitioner->n_ghost_indices();
 
     owned_cell_list.clear();
+    occupied_cell_list.clear();
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         owned_cell_list.push_back(cell);

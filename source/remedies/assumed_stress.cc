@@ -62,18 +62,17 @@ namespace mpm
             transform[b][a] = s[voigt_i<dim>[b]][voigt_j<dim>[b]];
         }
       // sigma : A : sigma in Voigt components (off-diagonals counted once)
+      const SymmetricTensor<4, dim> A_of = metric == Metric::mass ?
+                                             identity_tensor<dim>() :
+                                             compliance;
       for (unsigned int a = 0; a < n_voigt; ++a)
         for (unsigned int b = 0; b < n_voigt; ++b)
           {
             const double ma = voigt_i<dim>[a] == voigt_j<dim>[a] ? 1. : 2.;
             const double mb = voigt_i<dim>[b] == voigt_j<dim>[b] ? 1. : 2.;
-            const double A =
-              metric == Metric::mass ?
-                identity_tensor<dim>()[voigt_i<dim>[a]][voigt_j<dim>[a]]
-                                      [voigt_i<dim>[b]][voigt_j<dim>[b]] :
-                compliance[voigt_i<dim>[a]][voigt_j<dim>[a]][voigt_i<dim>[b]]
+            W[a][b] = ma * mb *
+                      A_of[voigt_i<dim>[a]][voigt_j<dim>[a]][voigt_i<dim>[b]]
                           [voigt_j<dim>[b]];
-            W[a][b] = ma * mb * A;
           }
       for (unsigned int a = 0; a < n_voigt; ++a)
         for (unsigned int b = 0; b < n_voigt; ++b)
@@ -89,6 +88,32 @@ namespace mpm
             for (unsigned int c = 0; c < n_voigt; ++c)
               TWT[a][b] += TW[a][c] * transform[c][b];
           }
+
+      // the connected groups of stress components (H_kl = TWT[row k][row
+      // l] * moment): a column belongs to its component's group
+      using C = internal::BasisColumns<dim>;
+      unsigned int group_of_row[n_voigt];
+      for (unsigned int a = 0; a < n_voigt; ++a)
+        group_of_row[a] = a;
+      for (bool merged = true; merged;)
+        {
+          merged = false;
+          for (unsigned int a = 0; a < n_voigt; ++a)
+            for (unsigned int b = 0; b < n_voigt; ++b)
+              if ((TWT[a][b] != 0. || TWT[b][a] != 0.) &&
+                  group_of_row[b] > group_of_row[a])
+                group_of_row[b] = group_of_row[a], merged = true;
+        }
+      unsigned int group[n_beta];
+      for (unsigned int k = 0; k < n_active; ++k)
+        group[k] = group_of_row[C::row[k]];
+      for (unsigned int j = 0; j < n_active; ++j)
+        {
+          coupled[j] = 0;
+          for (unsigned int k = 0; k < n_active; ++k)
+            if (k != j && group[k] == group[j])
+              coupled[j] |= std::uint32_t(1) << k;
+        }
     }
 
     template <int dim>
@@ -197,18 +222,48 @@ namespace mpm
     AssumedStressProjection<dim>::solve_sized(const Moments &sums,
                                               double        *beta) const
     {
-      using C = internal::BasisColumns<dim>;
+      using C          = internal::BasisColumns<dim>;
+      const auto entry = [&](const unsigned int k, const unsigned int l) {
+        const unsigned int i = std::min(C::mono[k], C::mono[l]);
+        const unsigned int j = std::max(C::mono[k], C::mono[l]);
+        return TWT[C::row[k]][C::row[l]] * sums.moment[i][j];
+      };
+      // The 3D fields visit only the entries within a group of coupled
+      // columns, in ascending order (the others are zero and stay zero);
+      // the small 2D ones all of them, in loops the compiler unrolls.
+      constexpr bool sparse    = n > 7;
+      const auto     for_below = [&](const unsigned int j, const auto &f) {
+        if constexpr (sparse)
+          for (auto m = coupled[j] & ((std::uint32_t(1) << j) - 1); m != 0;
+               m &= m - 1)
+            f(static_cast<unsigned int>(__builtin_ctz(m)));
+        else
+          for (unsigned int k = 0; k < j; ++k)
+            f(k);
+      };
+      const auto for_above = [&](const unsigned int j, const auto &f) {
+        if constexpr (sparse)
+          for (auto m = coupled[j] & ~((std::uint32_t(2) << j) - 1); m != 0;
+               m &= m - 1)
+            f(static_cast<unsigned int>(__builtin_ctz(m)));
+        else
+          for (unsigned int i = j + 1; i < n; ++i)
+            f(i);
+      };
       double H[n][n], R[n];
       for (unsigned int k = 0; k < n; ++k)
         {
-          R[k] = sums.rhs[C::row[k]][C::mono[k]];
-          for (unsigned int l = 0; l < n; ++l)
-            {
-              const unsigned int i = std::min(C::mono[k], C::mono[l]);
-              const unsigned int j = std::max(C::mono[k], C::mono[l]);
-              H[k][l] = TWT[C::row[k]][C::row[l]] * sums.moment[i][j];
-            }
+          R[k]    = sums.rhs[C::row[k]][C::mono[k]];
+          H[k][k] = entry(k, k);
+          for_above(k, [&](const unsigned int i) { H[i][k] = entry(i, k); });
         }
+      // the fallback's whole matrix
+      const auto constant_fallback = [&]() {
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int l = 0; l < n; ++l)
+            H[k][l] = entry(k, l);
+        return solve_constant(H, R, beta);
+      };
 
       // H is symmetric positive semi-definite. Its LDL^T factorisation
       // (unpivoted: the matrix is tiny and SPD when the layout is good)
@@ -222,32 +277,33 @@ namespace mpm
       for (unsigned int j = 0; j < n; ++j)
         {
           double d = H[j][j];
-          for (unsigned int k = 0; k < j; ++k)
+          for_below(j, [&](const unsigned int k) {
             d -= L[j][k] * L[j][k] * D[k];
+          });
           if (!(d > 1e-6 * H[j][j]))
-            return solve_constant(H, R, beta);
+            return constant_fallback();
           D[j] = d;
-          for (unsigned int i = j + 1; i < n; ++i)
-            {
-              double l = H[i][j];
-              for (unsigned int k = 0; k < j; ++k)
-                l -= L[i][k] * L[j][k] * D[k];
-              L[i][j] = l / d;
-            }
+          for_above(j, [&](const unsigned int i) {
+            double l = H[i][j];
+            for_below(j, [&](const unsigned int k) {
+              l -= L[i][k] * L[j][k] * D[k];
+            });
+            L[i][j] = l / d;
+          });
         }
       // L y = R, D z = y, L^T beta = z
       for (unsigned int i = 0; i < n; ++i)
         {
           double y = R[i];
-          for (unsigned int k = 0; k < i; ++k)
-            y -= L[i][k] * beta[k];
+          for_below(i, [&](const unsigned int k) { y -= L[i][k] * beta[k]; });
           beta[i] = y;
         }
       for (unsigned int i = 0; i < n; ++i)
         beta[i] /= D[i];
       for (unsigned int i = n; i-- > 0;)
-        for (unsigned int k = i + 1; k < n; ++k)
+        for_above(i, [&](const unsigned int k) {
           beta[i] -= L[k][i] * beta[k];
+        });
       return Result::full;
     }
 

@@ -52,58 +52,19 @@ namespace mpm
 
     template <int dim>
     void
-    AssumedStressForce<dim>::build_box_operator(
-      const shape_functions::Q1Cell<dim> &geo,
-      const AssumedStressProjection<dim> &field) const
-    {
-      box_operator.clear();
-      box_extent = geo.extent;
-      double                 N[n_nodes];
-      Tensor<1, dim>         G[n_nodes];
-      constexpr unsigned int n_beta = AssumedStressProjection<dim>::n_beta;
-      for (unsigned int k = 0; k < n_points; ++k)
-        {
-          Point<dim>   x;
-          unsigned int r = k;
-          for (unsigned int d = 0; d < dim; ++d, r /= 3)
-            x[d] = 0.5 * (r % 3);
-          geo.values_and_gradients(x, N, G);
-          for (unsigned int b = 0; b < field.size(); ++b)
-            {
-              double unit[n_beta]                 = {};
-              unit[b]                             = 1;
-              const SymmetricTensor<2, dim> sigma = field.field(x, unit);
-              for (unsigned int v = 0; v < n_nodes; ++v)
-                {
-                  const Tensor<1, dim> f = -(sigma * G[v]);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    if (f[d] != 0.)
-                      box_operator.push_back(
-                        {static_cast<unsigned short>(k * field.size() + b),
-                         static_cast<unsigned short>(v * dim + d),
-                         f[d]});
-                }
-            }
-        }
-    }
-
-    template <int dim>
-    void
     AssumedStressForce<dim>::add_internal_force(
       const shape_functions::Q1Cell<dim> &geo,
       const AssumedStressProjection<dim> &field,
       const double                       *beta,
       double                             *force) const
     {
-      add_internal_force(geo, field, beta, field.cartesian_field(beta), force);
+      add_internal_force(geo, field.cartesian_field(beta), force);
     }
 
     template <int dim>
     void
     AssumedStressForce<dim>::add_internal_force(
       const shape_functions::Q1Cell<dim>                         &geo,
-      const AssumedStressProjection<dim>                         &field,
-      const double                                               *beta,
       const typename AssumedStressProjection<dim>::CartesianField &sigma,
       double                                                     *force) const
     {
@@ -136,25 +97,65 @@ namespace mpm
               }
             return;
           }
+      if constexpr (dim == 3)
+        if (geo.is_box)
+          {
+            // dN_v/dx_j = s_j / (4 h_j) (1 + s_a r_a)(1 + s_b r_b), a and
+            // b the other two directions, s = -1, +1 the node's side. So
+            // f_vi = - sum_j s_j / (4 h_j) (Q_ij1 + s_a Q_ija + s_b Q_ijb +
+            // s_a s_b Q_ijab) with Q_ije = int sigma_ij e, e = 1, r_a,
+            // r_b, r_a r_b: moments of the field's monomials times e.
+            constexpr unsigned int voigt[3][3] = {{0, 5, 4},
+                                                  {5, 1, 3},
+                                                  {4, 3, 2}};
+            // index a + 3 b + 9 c of the monomials 1, r0, r1, r2, r1 r2,
+            // r0 r2, r0 r1 (internal::BasisColumns<3>) among the moments
+            constexpr unsigned int mono[7] = {0, 1, 3, 9, 12, 10, 4};
+            constexpr unsigned int stride[3] = {1, 3, 9};
+            double                 Q[3][3][4];
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                const unsigned int a = j == 0 ? 1 : 0, b = j == 2 ? 1 : 2;
+                const unsigned int e[4] = {0,
+                                           stride[a],
+                                           stride[b],
+                                           stride[a] + stride[b]};
+                for (unsigned int i = 0; i < 3; ++i)
+                  {
+                    const double *c = sigma.c[voigt[i][j]];
+                    for (unsigned int k = 0; k < 4; ++k)
+                      {
+                        double q = 0;
+                        for (unsigned int m = 0; m < 7; ++m)
+                          q += c[m] * moment[mono[m] + e[k]];
+                        Q[i][j][k] = q;
+                      }
+                  }
+              }
+            for (unsigned int v = 0; v < 8; ++v)
+              {
+                double s[3];
+                for (unsigned int d = 0; d < 3; ++d)
+                  s[d] = ((v >> d) & 1) ? 1. : -1.;
+                for (unsigned int i = 0; i < 3; ++i)
+                  {
+                    double f = 0;
+                    for (unsigned int j = 0; j < 3; ++j)
+                      {
+                        const unsigned int a = j == 0 ? 1 : 0,
+                                           b = j == 2 ? 1 : 2;
+                        const double *q = Q[i][j];
+                        f += s[j] * 0.25 / geo.extent[j] *
+                             (q[0] + s[a] * q[1] + s[b] * q[2] +
+                              s[a] * s[b] * q[3]);
+                      }
+                    force[3 * v + i] -= f;
+                  }
+              }
+            return;
+          }
       double weight[n_points];
       lattice_weights(weight);
-      if (geo.is_box)
-        {
-          // Cells of one size share the operator (the field is fixed by
-          // the cell's Jacobian, i.e. its extent).
-          if (box_operator.empty() || !(geo.extent == box_extent))
-            build_box_operator(geo, field);
-          // the field's own size: the Pian-Sumihara field leaves the
-          // enriched coefficients out (zero, and without operator terms)
-          const unsigned int nb = field.size();
-          double wb[n_points * AssumedStressProjection<dim>::n_beta];
-          for (unsigned int k = 0; k < n_points; ++k)
-            for (unsigned int b = 0; b < nb; ++b)
-              wb[k * nb + b] = weight[k] * beta[b];
-          for (const Term &t : box_operator)
-            force[t.vd] += t.c * wb[t.kb];
-          return;
-        }
       double         N[n_nodes];
       Tensor<1, dim> G[n_nodes];
       for (unsigned int k = 0; k < n_points; ++k)

@@ -2,11 +2,50 @@
 #include <mpm/remedies/assumed_stress_remedy.h>
 #include <mpm/remedies/stress_filter.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
 namespace mpm
 {
   namespace remedies
   {
     using namespace dealii;
+
+    namespace
+    {
+      /// J0 rounded to about 40 significant bits of its largest entry: the
+      /// cells of a uniform grid, whose Jacobians differ in round-off,
+      /// share one projection, and the round-off off-diagonal entries of a
+      /// box's Jacobian become the zeros that decouple its stress
+      /// components (AssumedStressProjection). A function of the cell
+      /// alone, so runs stay reproducible on any number of ranks.
+      template <int dim>
+      Tensor<2, dim>
+      rounded_jacobian(const Tensor<2, dim> &J0)
+      {
+        double largest = 0;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            largest = std::max(largest, std::abs(J0[i][j]));
+        if (!(largest > 1e-300 && largest < 1e300))
+          return J0;
+        // c = 2^(e + 12) for largest in [2^e, 2^(e+1)): x + c keeps the
+        // bits of x down to 2^(e - 40) (this runs once per cell and pass,
+        // so without calls to libm)
+        std::uint64_t bits;
+        std::memcpy(&bits, &largest, sizeof bits);
+        bits = (bits & 0x7ff0000000000000ULL) + (std::uint64_t(12) << 52);
+        double c;
+        std::memcpy(&c, &bits, sizeof c);
+        Tensor<2, dim> rounded;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            rounded[i][j] = (J0[i][j] + c) - c;
+        return rounded;
+      }
+    } // namespace
 
     template <int dim>
     StressFilter<dim>::StressFilter(const std::vector<Body<dim>> &bodies)
@@ -18,6 +57,7 @@ namespace mpm
       , enriched(bodies.size(), 0)
       , write_back(bodies.size(), 1)
       , last_J0(bodies.size())
+      , last_rounded_J0(bodies.size())
       , sums(bodies.size())
       , fields(bodies.size())
       , material(bodies.size())
@@ -60,14 +100,20 @@ namespace mpm
                                     const unsigned int    b)
     {
       if constexpr (dim > 1)
-        // Cells of a uniform grid share J0: build the projection only when
-        // the geometry changes.
-        if (!projections[b] || !(J0 == last_J0[b]))
-          {
-            projections[b] = std::make_unique<AssumedStressProjection<dim>>(
-              J0, metric[b], compliance[b], enriched[b]);
-            last_J0[b] = J0;
-          }
+        {
+          // Cells of a uniform grid share J0: build the projection only
+          // when the geometry changes (the rounding only when J0 does).
+          if (projections[b] && J0 == last_J0[b])
+            return;
+          last_J0[b]             = J0;
+          const Tensor<2, dim> J = rounded_jacobian(J0);
+          if (!projections[b] || !(J == last_rounded_J0[b]))
+            {
+              projections[b] = std::make_unique<AssumedStressProjection<dim>>(
+                J, metric[b], compliance[b], enriched[b]);
+              last_rounded_J0[b] = J;
+            }
+        }
     }
 
     template <int dim>

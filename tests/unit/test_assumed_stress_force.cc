@@ -29,13 +29,14 @@ namespace
   /// n_particles random particles with domain half-widths (reference
   /// coordinates) in [a_min, a_max]. A filled cell (at least 2^dim
   /// particles covering 3/4 of it) must get the exact integral; a sparse
-  /// one the particle sum.
+  /// one the particle sum. @p enriched: the enriched field.
   template <int dim>
   void
   check_box(const unsigned int seed,
             const unsigned int n_particles,
             const double       a_min,
-            const double       a_max)
+            const double       a_max,
+            const bool         enriched = false)
   {
     constexpr unsigned int                 nv = mpm::shape_functions::n_q1<dim>;
     std::mt19937                           gen(seed);
@@ -55,7 +56,10 @@ namespace
     Tensor<2, dim> J0;
     for (unsigned int d = 0; d < dim; ++d)
       J0[d][d] = extent[d];
-    const AssumedStressProjection<dim> field(J0, Metric::mass);
+    const AssumedStressProjection<dim> field(J0,
+                                             Metric::mass,
+                                             SymmetricTensor<4, dim>(),
+                                             enriched);
     double beta[AssumedStressProjection<dim>::n_beta];
     for (double &b : beta)
       b = 2 * u(gen) - 1;
@@ -156,6 +160,15 @@ BOOST_AUTO_TEST_CASE(exact_on_filled_boxes_3d)
 {
   for (unsigned int seed = 1; seed <= 20; ++seed)
     check_box<3>(seed, 12, 0.25, 0.35);
+}
+
+BOOST_AUTO_TEST_CASE(exact_on_filled_boxes_enriched_field)
+{
+  for (unsigned int seed = 1; seed <= 20; ++seed)
+    {
+      check_box<2>(seed, 8, 0.2, 0.3, true);
+      check_box<3>(seed, 12, 0.25, 0.35, true);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(particle_sum_in_sparse_cells)

@@ -83,6 +83,16 @@ namespace mpm
       return owned_cell_list;
     }
 
+    /// The owned cells that held particles at the last particle loop, in
+    /// active cell index order: kept and checked by
+    /// for_each_cell_with_particles() (particles/cell_loop.h), emptied
+    /// whenever the grid's cells change.
+    std::vector<ActiveCell> &
+    cells_with_particles() const
+    {
+      return occupied_cell_list;
+    }
+
     /// Geometry of an owned or ghost cell.
     const shape_functions::Q1Cell<dim> &
     geometry(const typename dealii::Triangulation<dim>::active_cell_iterator
@@ -294,6 +304,7 @@ namespace mpm
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
     std::vector<shape_functions::Q1Cell<dim>>                  cell_geometry;
     std::vector<ActiveCell>                                    owned_cell_list;
+    mutable std::vector<ActiveCell> occupied_cell_list;
     std::vector<unsigned int>                                  cell_nodes;
     std::vector<unsigned int>                                  neighbors;
     std::vector<double>                                        cell_heights;

@@ -4,6 +4,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace mpm
@@ -205,6 +206,13 @@ namespace mpm
       /// T^T W T and T^T W: the metric seen from the natural components.
       double TWT[n_voigt][n_voigt];
       double TW[n_voigt][n_voigt];
+
+      /// Bit k of coupled[j]: column k is coupled to column j through
+      /// T^T W T, directly or through others (a box's mass metric
+      /// decouples the stress components). The factorization visits only
+      /// these; the entries it skips are zero, so the result is the dense
+      /// one bit for bit.
+      std::uint32_t coupled[n_beta];
     };
 
     template <int dim>

@@ -6,7 +6,6 @@
 #include <mpm/remedies/assumed_stress.h>
 #include <mpm/shape_functions/q1_cell.h>
 
-#include <vector>
 
 namespace mpm
 {
@@ -32,15 +31,17 @@ namespace mpm
      * a, b, c in {0, 1, 2}, with E_p[r] = r_c and E_p[r^2] = r_c^2 +
      * (2 a_d)^2 / 3: one outer product of two (three) 3-vectors per
      * particle. From them:
-     * - 2D boxes: the force in closed form (doc/theory/assumed_stress_filter.md): grad N is
-     *   linear and the field is linear in r, so only M_00, M_10, M_01,
-     *   M_20, M_02, M_11 enter;
-     * - other cells and 3D: the weights of the lattice {-1, 0, 1}^dim,
+     * - boxes: the force in closed form (doc/theory/assumed_stress_filter.md):
+     *   grad N_v is a product of linear factors, one per direction but
+     *   the derivative's, and the field's monomials are at most linear in
+     *   each direction, so each force component is a sum of the field's
+     *   coefficients times moments (2D: M_00, M_10, M_01, M_20, M_02,
+     *   M_11; 3D: about 500 products per cell);
+     * - other cells: the weights of the lattice {-1, 0, 1}^dim,
      *   W_k = integral of its Lagrange polynomial l_k, so that
      *     int sigma grad N_v = sum_k W_k sigma(x_k) grad N_v(x_k),
-     *   on 3D boxes through a sparse operator cached per cell size, on
-     *   other cells evaluated at the lattice points (a consistent
-     *   quadrature of the smooth integrand).
+     *   evaluated at the lattice points (a consistent quadrature of the
+     *   smooth integrand).
      * Only in cells the particles fill (fills()): in sparse cells the
      * second moments are large against the particles' spread, the force
      * departs from the particle quadrature of the projection and nearly
@@ -94,23 +95,10 @@ namespace mpm
       void
       add_internal_force(
         const shape_functions::Q1Cell<dim>                         &geo,
-        const AssumedStressProjection<dim>                         &field,
-        const double                                               *beta,
         const typename AssumedStressProjection<dim>::CartesianField &sigma,
         double                                                     *force) const;
 
     private:
-      /// The force operator of a 3D box: f[vd] += c W[k] beta[b].
-      struct Term
-      {
-        unsigned short kb; ///< k * (field size) + b: index into weight x beta
-        unsigned short vd;
-        double         c;
-      };
-      void
-      build_box_operator(const shape_functions::Q1Cell<dim> &geo,
-                         const AssumedStressProjection<dim> &field) const;
-
       /// The lattice weights W_k from the moments.
       void
       lattice_weights(double *weight) const;
@@ -118,9 +106,6 @@ namespace mpm
       /// M_abc at index a + 3 b + 9 c.
       double moment[n_points];
       bool   any = false;
-
-      mutable std::vector<Term>      box_operator;
-      mutable dealii::Tensor<1, dim> box_extent;
     };
 
     template <int dim>

@@ -170,7 +170,8 @@ namespace mpm
       std::vector<std::unique_ptr<AssumedStressProjection<dim>>> projections;
       std::vector<char> enriched;   ///< Filter field = enriched, per body
       std::vector<char> write_back; ///< not Filtered stress = force only
-      std::vector<dealii::Tensor<2, dim>> last_J0;
+      /// the Jacobian of the last cell, and as rounded for its projection
+      std::vector<dealii::Tensor<2, dim>> last_J0, last_rounded_J0;
       /// The fused projection's sums of the current cell, per body.
       std::vector<typename AssumedStressProjection<dim>::Moments> sums;
       std::vector<typename AssumedStressProjection<dim>::CartesianField>

@@ -111,8 +111,9 @@ namespace mpm
             double     f[nv * dim] = {};
             const auto result      = filter.finish_cell(pic, b, beta);
             if (result != remedies::StressFilter<dim>::Result::unchanged)
-              field_force[b].add_internal_force(
-                geo, filter.projection(b), beta, filter.cartesian_field(b), f);
+              field_force[b].add_internal_force(geo,
+                                                filter.cartesian_field(b),
+                                                f);
             else
               own_stress_force(geo, pic, b, f);
             for (unsigned int v = 0; v < nv; ++v)
