@@ -25,6 +25,13 @@ run_mpm() {
   else timeout 300 "$mpm" "$@"; fi
 }
 fail() { echo "FAIL: $*"; exit 1; }
+# Runs case.prm in $disk; fails (showing the screen) unless mpm stopped
+# with status 2. $1 names the case in the failure.
+expect_status_2() {
+  (cd "$disk" && run_mpm case.prm > screen.txt 2>&1)
+  local rc=$?
+  [ "$rc" = 2 ] || { cat "$disk/screen.txt"; fail "$1: exit status $rc, expected 2"; }
+}
 here=$(pwd)
 disk=$here/disk
 # a mount left by an interrupted run (possibly stacked) is taken down
@@ -57,9 +64,7 @@ checkpoint_kb=$(du -sk "ref/results/checkpoint/$latest" | cut -f1)
 size_kb=$((checkpoint_kb * 2 + 32))
 mount -t tmpfs -o size=${size_kb}k tmpfs "$disk" || fail "mount"
 cp ref/case.prm "$disk/"
-(cd "$disk" && run_mpm case.prm > screen.txt 2>&1)
-rc=$?
-[ "$rc" = 2 ] || { cat "$disk/screen.txt"; fail "full disk: exit status $rc, expected 2"; }
+expect_status_2 "full disk"
 grep -q "while writing the checkpoint of step [0-9]*: no room on the disk: about .* MB are needed in 'results', the file system has .* MB free" "$disk/screen.txt" \
   || { cat "$disk/screen.txt"; fail "full disk: the message names neither the checkpoint nor the free space"; }
 grep -q "is intact" "$disk/screen.txt" \
@@ -84,9 +89,7 @@ subsection Checkpointing
   set Steps between checkpoints = 0
 end
 P
-(cd "$disk" && run_mpm case.prm > screen.txt 2>&1)
-rc=$?
-[ "$rc" = 2 ] || { cat "$disk/screen.txt"; fail "vtu on a full disk: exit status $rc, expected 2"; }
+expect_status_2 "vtu on a full disk"
 grep -q "cannot write .* in 'results' (the file system of 'results' has" "$disk/screen.txt" \
   || { cat "$disk/screen.txt"; fail "vtu on a full disk: the message does not name the directory and its free space"; }
 echo "OK   output on a full disk: status 2, $(grep -o "cannot write [^:]*" "$disk/screen.txt" | head -1)"
@@ -101,9 +104,7 @@ seen_p4est=0
 for entries in 5 6 7 8 9 10 11 12 13 14 15 16; do
   mount -t tmpfs -o size=20m,nr_inodes=$entries tmpfs "$disk" || fail "mount"
   cp ref/case.prm "$disk/"
-  (cd "$disk" && run_mpm case.prm > screen.txt 2>&1)
-  rc=$?
-  [ "$rc" = 2 ] || { cat "$disk/screen.txt"; fail "$entries file entries: exit status $rc, expected 2"; }
+  expect_status_2 "$entries file entries"
   grep -q "mpm: the simulation stopped while \(opening the output\|writing the checkpoint of step [0-9]*\): .*\(results\|No space\)" "$disk/screen.txt" \
     || { cat "$disk/screen.txt"; fail "$entries file entries: the message names no folder"; }
   grep -q "p4est stopped on a failed write" "$disk/screen.txt" && seen_p4est=1
