@@ -112,10 +112,12 @@ namespace mpm
             // r0 r2, r0 r1 (internal::BasisColumns<3>) among the moments
             constexpr unsigned int mono[7] = {0, 1, 3, 9, 12, 10, 4};
             constexpr unsigned int stride[3] = {1, 3, 9};
+            // the two directions other than j
+            constexpr unsigned int other[3][2] = {{1, 2}, {0, 2}, {0, 1}};
             double                 Q[3][3][4];
             for (unsigned int j = 0; j < 3; ++j)
               {
-                const unsigned int a = j == 0 ? 1 : 0, b = j == 2 ? 1 : 2;
+                const unsigned int a = other[j][0], b = other[j][1];
                 const unsigned int e[4] = {0,
                                            stride[a],
                                            stride[b],
@@ -142,9 +144,8 @@ namespace mpm
                     double f = 0;
                     for (unsigned int j = 0; j < 3; ++j)
                       {
-                        const unsigned int a = j == 0 ? 1 : 0,
-                                           b = j == 2 ? 1 : 2;
-                        const double *q = Q[i][j];
+                        const unsigned int a = other[j][0], b = other[j][1];
+                        const double      *q = Q[i][j];
                         f += s[j] * 0.25 / geo.extent[j] *
                              (q[0] + s[a] * q[1] + s[b] * q[2] +
                               s[a] * s[b] * q[3]);
