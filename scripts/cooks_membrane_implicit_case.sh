@@ -7,7 +7,8 @@
 # stress; FAMILY=uGIMP|cpGIMP|CPDI|CPDI2 the shape-function family;
 # FILTER=mass|compliance the assumed-stress filter with that metric;
 # SMOOTHING=cell theta-bar; SUPPORT=x Implicit solver/Minimum nodal
-# support.
+# support; PRECONDITIONER="AMG with cell pressure" Implicit
+# solver/Preconditioner.
 # Usage: scripts/cooks_membrane_implicit_case.sh H OUTDIR > case.prm
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -38,6 +39,7 @@ subsection Shape functions
 end
 subsection Implicit solver
   set Minimum nodal support = ${SUPPORT:-1e-4}
+  set Preconditioner = ${PRECONDITIONER:-AMG}
 end
 subsection Output
   set Directory = $out

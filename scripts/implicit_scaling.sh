@@ -10,10 +10,19 @@
 #   cook-b  the same nearly incompressible in plane strain
 #           (prm/cooks_membrane_plane_strain.prm, nu = 0.4999), h = 2, 1,
 #           0.5
+#   cook-b-theta  cook-b with Volumetric smoothing = cell (theta-bar),
+#           h = 2, 1, 0.5, preconditioned by AMG (at h = 0.25 its GMRES
+#           does not converge in 2000 iterations)
+#   cook-b-split  the same with Preconditioner = AMG with cell pressure,
+#           h = 2, 1, 0.5, 0.25
 #   block3d a unit cube of linear elastic material (nu = 0.3) on a fixed
 #           base under its own weight, 4 to 32 cells per direction with
 #           2^3 particles per cell, one load step (AMG-GMRES)
+#   block3d-theta, block3d-split  the cube at nu = 0.4999 with theta-bar,
+#           4 to 16 cells per direction, by AMG and by AMG with cell
+#           pressure
 # Usage: [CASES="cook-a cook-b block3d"] [RANKS="1 2"] scripts/implicit_scaling.sh
+# (the default cases; the others by name)
 # About 5 minutes for everything on 2 cores. Run it on an otherwise idle
 # machine.
 set -euo pipefail
@@ -26,7 +35,7 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-block3d() { # cells per direction
+block3d() { # cells per direction [Poisson's ratio, smoothing, preconditioner]
   cat <<PRM
 set Dimension = 3
 subsection Grid
@@ -62,10 +71,16 @@ subsection Bodies
       set Density = 1000
       subsection Linear elastic
         set Young's modulus = 1e6
-        set Poisson's ratio = 0.3
+        set Poisson's ratio = ${2:-0.3}
       end
     end
+    subsection Locking remedies
+      set Volumetric smoothing = ${3:-none}
+    end
   end
+end
+subsection Implicit solver
+  set Preconditioner = ${4:-AMG}
 end
 PRM
 }
@@ -76,7 +91,10 @@ for c in $cases; do
   case $c in
     cook-a) sizes="2 1 0.5 0.25 0.125" ;;
     cook-b) sizes="2 1 0.5" ;;
+    cook-b-theta) sizes="2 1 0.5" ;;
+    cook-b-split) sizes="2 1 0.5 0.25" ;;
     block3d) sizes="4 8 16 32" ;;
+    block3d-theta|block3d-split) sizes="4 8 16" ;;
     *) echo "unknown case $c" >&2; exit 1 ;;
   esac
   for ranks in $ranks_list; do
@@ -84,7 +102,12 @@ for c in $cases; do
       case $c in
         cook-a) "$root/scripts/cooks_membrane_implicit_case.sh" "$s" "$work/out" ;;
         cook-b) CASE=b "$root/scripts/cooks_membrane_implicit_case.sh" "$s" "$work/out" ;;
+        cook-b-theta) CASE=b SMOOTHING=cell "$root/scripts/cooks_membrane_implicit_case.sh" "$s" "$work/out" ;;
+        cook-b-split) CASE=b SMOOTHING=cell PRECONDITIONER="AMG with cell pressure" \
+          "$root/scripts/cooks_membrane_implicit_case.sh" "$s" "$work/out" ;;
         block3d) block3d "$s" ;;
+        block3d-theta) block3d "$s" 0.4999 cell ;;
+        block3d-split) block3d "$s" 0.4999 cell "AMG with cell pressure" ;;
       esac > "$work/case.prm"
       rm -rf "$work/out"
       (cd "$work" && mpirun -np "$ranks" "$mpm" case.prm > log) \
@@ -96,7 +119,7 @@ log, stats, case, ranks, size = sys.argv[1:]
 text = open(log).read()
 nodes = int(re.search(r"grid: \d+ cells, (\d+) nodes", text).group(1))
 particles = int(re.search(r"particles: (\d+)", text).group(1))
-dim = 3 if case == "block3d" else 2
+dim = 3 if case.startswith("block3d") else 2
 phases = ("implicit set-up", "implicit assembly", "implicit linear solve",
           "stress update", "G2P", "position update", "stress filter")
 wall = sum(float(m.group(1)) for m in
@@ -107,7 +130,7 @@ v = dict(zip(rows[0], rows[-1]))
 steps = int(float(v["step"]))
 newton = int(float(v["newton_iterations"]))
 linear = int(float(v["linear_iterations"]))
-grid = f"h = {size}" if case != "block3d" else f"{size}^3"
+grid = f"h = {size}" if dim == 2 else f"{size}^3"
 print("| %s | %s | %s | %d | %d | %d | %.1f | %.2f |" % (
     case, ranks, grid, dim * nodes, particles, newton,
     linear / max(newton, 1), wall / max(steps, 1)))

@@ -4,6 +4,7 @@
 
 #include <mpm/grid/nodal_layout.h>
 #include <mpm/integrators/implicit_integrator.h>
+#include <mpm/materials/lame_moduli.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/remedies/assumed_stress_force.h>
@@ -77,6 +78,49 @@ namespace mpm
         "Implicit solver/Linear solver = CG needs a symmetric tangent, but "
         "a material of the bodies is not hyperelastic: use GMRES (or "
         "automatic)");
+    set_up_cell_pressure();
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::set_up_cell_pressure()
+  {
+    using Preconditioner = Parameters::ImplicitSolver::Preconditioner;
+    const auto &p        = state.params;
+    split_lambda.assign(state.bodies.size(), 0.);
+    split_mu.assign(state.bodies.size(), 0.);
+    if (p.implicit.preconditioner != Preconditioner::amg_cell_pressure)
+      return;
+    const std::string name =
+      "Implicit solver/Preconditioner = AMG with cell pressure";
+    if (linear_solver == Parameters::ImplicitSolver::LinearSolver::direct)
+      throw InputError(name + " preconditions an iterative solver, but "
+                              "Implicit solver/Linear solver = direct");
+    bool any = false;
+    for (unsigned int b = 0; b < state.bodies.size(); ++b)
+      {
+        const auto &body = state.bodies[b];
+        double      E = 0, nu = 0;
+        if (!smoothing->smooths(b) || body.is_rigid() ||
+            !body.material->elastic_moduli(E, nu) ||
+            state.params.kinematics == KinematicAssumption::uniaxial_stress)
+          continue;
+        const materials::LameModuli moduli(E, nu, state.params.kinematics);
+        const double                lambda_s =
+          moduli.lambda - NodalLinearSystem<dim>::cell_pressure_gamma * moduli.mu;
+        if (!(lambda_s > 0) || !std::isfinite(lambda_s))
+          continue;
+        split_lambda[b] = lambda_s;
+        split_mu[b]     = moduli.mu;
+        any             = true;
+      }
+    if (!any)
+      throw InputError(
+        name + " splits the cells of nearly incompressible bodies "
+               "(Volumetric smoothing = cell, elastic moduli with lambda > "
+               "10 mu, i.e. nu > 0.455 in 3D and plane strain), and no body "
+               "is one: use Preconditioner = AMG");
+    system.split_cell_pressure(true);
   }
 
   template <int dim>
@@ -883,7 +927,25 @@ namespace mpm
     if (any_filtered && !add_filtered_force(cell, pic, with_matrix, error))
       return false;
     system.node_indices(nodes, n_nodes, cell_dofs);
-    if (with_matrix)
+    if (with_matrix && system.splits_cell_pressure())
+      {
+        // each smoothed body's stiff volumetric part, lambda b b^T / V
+        cell_pressures.clear();
+        for (unsigned int b = 0; b < split_lambda.size(); ++b)
+          if (split_lambda[b] > 0)
+            {
+              typename NodalLinearSystem<dim>::CellPressure q;
+              const bool total =
+                state.bodies[b].material->stress_from_deformation_gradient();
+              if (!smoothing->volume_gradient(b, total, q.g, q.b, q.volume))
+                continue;
+              q.lambda = split_lambda[b];
+              q.mu     = split_mu[b];
+              cell_pressures.push_back(std::move(q));
+            }
+        system.add_cell(cell_matrix, cell_rhs, cell_dofs, cell_pressures);
+      }
+    else if (with_matrix)
       system.add_cell(cell_matrix, cell_rhs, cell_dofs);
     else
       system.add_cell_rhs(cell_rhs, cell_dofs);

@@ -67,6 +67,24 @@ namespace mpm
                         "GMRES; linear elastic's tangent is not symmetric "
                         "(Hughes-Winget rotation). CG with a non-symmetric "
                         "tangent is refused.");
+      prm.declare_entry(
+        "Preconditioner",
+        "AMG",
+        Selection("AMG|AMG with cell pressure"),
+        "AMG: ML algebraic multigrid on the tangent. Its iterations grow "
+        "as sqrt(lambda/mu) when the material is nearly incompressible. "
+        "AMG with cell pressure: for bodies with Volumetric smoothing = "
+        "cell, each cell's stiff volumetric part (lambda/V) b b^T, with b "
+        "the gradient of the cell's volume by the nodal increment, is "
+        "taken out of the tangent and carried by a pressure unknown per "
+        "cell and body; GMRES solves the equivalent displacement-pressure "
+        "system, preconditioned block-triangularly by AMG on the rest of "
+        "the tangent and a diagonal Schur complement. The displacement is "
+        "the same as with AMG, to the linear tolerance, which still "
+        "applies to the residual of the tangent. Bodies without "
+        "Volumetric smoothing = cell, or whose material has no elastic "
+        "moduli, keep their whole tangent in the AMG part. Needs an "
+        "iterative Linear solver (GMRES; automatic chooses it).");
       prm.declare_entry("Linear tolerance",
                         "1e-10",
                         Double(0),
@@ -108,6 +126,9 @@ namespace mpm
                               s == "GMRES"  ? LinearSolver::gmres :
                               s == "direct" ? LinearSolver::direct :
                                               LinearSolver::automatic;
+      preconditioner = prm.get("Preconditioner") == "AMG" ?
+                         Preconditioner::amg :
+                         Preconditioner::amg_cell_pressure;
       linear_tolerance      = prm.get_double("Linear tolerance");
       max_linear_iterations = prm.get_integer("Maximum linear iterations");
       min_nodal_support     = prm.get_double("Minimum nodal support");

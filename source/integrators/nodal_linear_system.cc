@@ -6,6 +6,8 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <mpm/integrators/nodal_linear_system.h>
 #include <mpm/utilities/elasticity_amg.h>
@@ -14,6 +16,8 @@ DEAL_II_DISABLE_EXTRA_DIAGNOSTICS
 #include <Epetra_MultiVector.h>
 DEAL_II_ENABLE_EXTRA_DIAGNOSTICS
 
+#include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <sstream>
 
@@ -206,7 +210,14 @@ namespace mpm
   NodalLinearSystem<dim>::begin_assembly(const bool with_matrix)
   {
     if (with_matrix)
-      matrix = 0.;
+      {
+        matrix = 0.;
+        row_columns.clear();
+        row_values.clear();
+        row_force_values.clear();
+        row_start.assign(1, 0);
+        row_moduli.clear();
+      }
     rhs = 0.;
   }
 
@@ -218,6 +229,74 @@ namespace mpm
   {
     constraints().distribute_local_to_global(
       cell_matrix, cell_rhs, indices, matrix, rhs);
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::add_cell(const FullMatrix<double>        &cell_matrix,
+                                   const Vector<double>            &cell_rhs,
+                                   const std::vector<Index>        &indices,
+                                   const std::vector<CellPressure> &pressures)
+  {
+    if (!split || pressures.empty())
+      {
+        add_cell(cell_matrix, cell_rhs, indices);
+        return;
+      }
+    const auto        &c = constraints();
+    const unsigned int n = indices.size();
+    rest_matrix          = cell_matrix;
+    for (const CellPressure &q : pressures)
+      {
+        // the rows b^T C and g^T C of the condensed unknowns: a
+        // constrained direction's share goes to the directions its line
+        // names
+        const std::vector<double>                &g = q.g.empty() ? q.b : q.g;
+        std::vector<std::tuple<Index, double, double>> row;
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            if (q.b[j] == 0. && g[j] == 0.)
+              continue;
+            if (!c.is_constrained(indices[j]))
+              row.emplace_back(indices[j], q.b[j], g[j]);
+            else
+              for (const auto &[l, w] : *c.get_constraint_entries(indices[j]))
+                row.emplace_back(l, w * q.b[j], w * g[j]);
+          }
+        std::sort(row.begin(), row.end());
+        double     norm  = 0;
+        const auto first = row_columns.size();
+        for (const auto &[l, v, f] : row)
+          if (row_columns.size() > first && row_columns.back() == l)
+            {
+              row_values.back() += v;
+              row_force_values.back() += f;
+            }
+          else
+            {
+              row_columns.push_back(l);
+              row_values.push_back(v);
+              row_force_values.push_back(f);
+            }
+        for (auto k = first; k < row_values.size(); ++k)
+          norm += row_values[k] * row_values[k];
+        if (!(norm > 0))
+          {
+            // nothing of it is free: the condensed part is zero anyway
+            row_columns.resize(first);
+            row_values.resize(first);
+            row_force_values.resize(first);
+            continue;
+          }
+        row_start.push_back(row_columns.size());
+        row_moduli.push_back({{q.lambda, q.mu, q.volume}});
+        const double k = q.lambda / q.volume;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            rest_matrix(i, j) -= k * g[i] * q.b[j];
+      }
+    c.distribute_local_to_global(cell_rhs, indices, rhs, cell_matrix);
+    c.distribute_local_to_global(rest_matrix, indices, matrix);
   }
 
   template <int dim>
@@ -253,6 +332,156 @@ namespace mpm
       if (constraints().is_constrained(k) && matrix.diag_element(k) == 0.)
         matrix.set(k, k, diagonal_scale);
     matrix.compress(VectorOperation::insert);
+    if (split)
+      build_cell_pressure();
+  }
+
+  template <int dim>
+  void
+  NodalLinearSystem<dim>::build_cell_pressure()
+  {
+    const Index n_rows = row_moduli.size();
+    Index       first  = 0; // the rows of the lower ranks
+    MPI_Exscan(&n_rows, &first, 1, Utilities::MPI::mpi_type_id_for_type<Index>, MPI_SUM, comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      first = 0;
+    const Index n_all  = Utilities::MPI::sum(n_rows, comm);
+    pressure_owned     = IndexSet(n_all);
+    pressure_owned.add_range(first, first + n_rows);
+    pressure_owned.compress();
+    if (n_all == 0)
+      return;
+    TrilinosWrappers::SparsityPattern pattern(pressure_owned, owned, comm);
+    for (Index r = 0; r < n_rows; ++r)
+      pattern.add_entries(first + r,
+                          row_columns.begin() + row_start[r],
+                          row_columns.begin() + row_start[r + 1]);
+    pattern.compress();
+    volume_gradient.reinit(pattern);
+    force_gradient.reinit(pattern);
+    for (Index r = 0; r < n_rows; ++r)
+      {
+        const auto n = row_start[r + 1] - row_start[r];
+        volume_gradient.set(first + r,
+                            n,
+                            row_columns.data() + row_start[r],
+                            row_values.data() + row_start[r]);
+        force_gradient.set(first + r,
+                           n,
+                           row_columns.data() + row_start[r],
+                           row_force_values.data() + row_start[r]);
+      }
+    volume_gradient.compress(VectorOperation::insert);
+    force_gradient.compress(VectorOperation::insert);
+
+    // Per row: l = |b|, W = l lambda_s / V, and the Schur complement's
+    // estimate (the augmented-Lagrangian one: K_rest holds gamma mu of
+    // the volumetric stiffness, so B K_rest^-1 B^T ~ V / ((gamma + 1) mu)
+    // on the cell's pressure). The column sums of |b| / l bound the map
+    // from the pressure rows' residual to the tangent's (solve), with g
+    // for b where the force's volume gradient is another (rate form).
+    row_scale.reinit(pressure_owned, comm);
+    row_weight.reinit(pressure_owned, comm);
+    schur_inverse.reinit(pressure_owned, comm);
+    TrilinosWrappers::MPI::Vector column_sums;
+    column_sums.reinit(owned, relevant, comm, true);
+    double row_sum_max = 0;
+    for (Index r = 0; r < n_rows; ++r)
+      {
+        double b_b = 0, g_sum = 0;
+        for (auto e = row_start[r]; e < row_start[r + 1]; ++e)
+          {
+            b_b += row_values[e] * row_values[e];
+            g_sum += std::abs(row_force_values[e]);
+          }
+        const auto  &[lambda, mu, volume] = row_moduli[r];
+        const double l                    = std::sqrt(b_b);
+        const double w                    = l * lambda / volume;
+        row_scale[first + r]              = l;
+        row_weight[first + r]             = w;
+        schur_inverse[first + r] =
+          1. / (l + w * volume / ((cell_pressure_gamma + 1) * mu));
+        row_sum_max = std::max(row_sum_max, g_sum / l);
+        for (auto e = row_start[r]; e < row_start[r + 1]; ++e)
+          column_sums[row_columns[e]] += std::abs(row_force_values[e]) / l;
+      }
+    column_sums.compress(VectorOperation::add);
+    // |C^T diag(1/l)|_2 <= sqrt(|.|_1 |.|_inf)
+    residual_bound =
+      1. + std::sqrt(Utilities::MPI::max(row_sum_max, comm) *
+                     column_sums.linfty_norm());
+    row_scale.compress(VectorOperation::insert);
+    row_weight.compress(VectorOperation::insert);
+    schur_inverse.compress(VectorOperation::insert);
+  }
+
+  namespace
+  {
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+
+    /// [K_rest, C^T; W B, -l] (NodalLinearSystem::solve_with_cell_pressure)
+    struct CellPressureOperator
+    {
+      const TrilinosWrappers::SparseMatrix &K_rest, &B, &C;
+      const TrilinosWrappers::MPI::Vector  &scale, &weight;
+
+      void
+      vmult(BlockVector &dst, const BlockVector &src) const
+      {
+        K_rest.vmult(dst.block(0), src.block(0));
+        C.Tvmult_add(dst.block(0), src.block(1));
+        B.vmult(dst.block(1), src.block(0));
+        dst.block(1).scale(weight);
+        TrilinosWrappers::MPI::Vector lp(src.block(1));
+        lp.scale(scale);
+        dst.block(1) -= lp;
+      }
+    };
+
+    /// [AMG(K_rest), C^T; 0, -S]^-1
+    struct CellPressurePreconditioner
+    {
+      const TrilinosWrappers::PreconditionAMG &amg;
+      const TrilinosWrappers::SparseMatrix    &C;
+      const TrilinosWrappers::MPI::Vector     &schur_inverse;
+
+      void
+      vmult(BlockVector &dst, const BlockVector &src) const
+      {
+        // p = -S^-1 r_p, x = AMG (r_x - C^T p)
+        dst.block(1) = src.block(1);
+        dst.block(1).scale(schur_inverse);
+        TrilinosWrappers::MPI::Vector r(src.block(0));
+        C.Tvmult_add(r, dst.block(1));
+        amg.vmult(dst.block(0), r);
+        dst.block(1) *= -1.;
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  unsigned int
+  NodalLinearSystem<dim>::solve_with_cell_pressure(
+    const TrilinosWrappers::PreconditionAMG &amg,
+    const Parameters::ImplicitSolver        &p,
+    TrilinosWrappers::MPI::Vector           &x)
+  {
+    const CellPressureOperator       K{
+      matrix, volume_gradient, force_gradient, row_scale, row_weight};
+    const CellPressurePreconditioner P{amg, force_gradient, schur_inverse};
+    BlockVector                      y({owned, pressure_owned}, comm);
+    BlockVector                      f({owned, pressure_owned}, comm);
+    f.block(0) = rhs;
+    // The tangent's residual is r_x + C^T diag(1/l) r_p (the pressure
+    // rows' residual r_p has force units): below the tolerance when the
+    // block residual is below it divided by 1 + |C^T diag(1/l)|.
+    SolverControl control(p.max_linear_iterations,
+                          p.linear_tolerance * rhs.l2_norm() / residual_bound);
+    SolverGMRES<BlockVector> gmres(
+      control, SolverGMRES<BlockVector>::AdditionalData(100, true));
+    gmres.solve(K, y, f, P);
+    x = y.block(0);
+    return control.last_step();
   }
 
   template <int dim>
@@ -303,6 +532,12 @@ namespace mpm
 
             SolverControl control(p.max_linear_iterations,
                                   p.linear_tolerance * rhs.l2_norm());
+            if (split && pressure_owned.size() > 0)
+              {
+                result.iterations = solve_with_cell_pressure(amg, p, x);
+                constraints().distribute(x);
+                return result;
+              }
             if (solver == LinearSolver::cg)
               {
                 SolverCG<TrilinosWrappers::MPI::Vector> cg(control);

@@ -123,6 +123,31 @@ namespace mpm
       return d;
     }
 
+    template <int dim>
+    bool
+    LinearizedCellSmoothing<dim>::volume_gradient(
+      const unsigned int   b,
+      const bool           total,
+      std::vector<double> &g,
+      std::vector<double> &b_change,
+      double              &V) const
+    {
+      const Sums &s = sums[b];
+      V             = total ? s.V : s.V_n;
+      if (!cell_average[b] || !(V > 0))
+        return false;
+      const auto &change = total ? s.V_g : s.V_n_G;
+      g.resize(n_nodes * dim);
+      b_change.resize(n_nodes * dim);
+      for (unsigned int a = 0; a < n_nodes; ++a)
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            g[a * dim + k]        = s.V_g[a][k];
+            b_change[a * dim + k] = change[a][k];
+          }
+      return true;
+    }
+
     template class LinearizedCellSmoothing<1>;
     template class LinearizedCellSmoothing<2>;
     template class LinearizedCellSmoothing<3>;

@@ -92,7 +92,7 @@ namespace
       for (unsigned int j = i; j < dim; ++j)
         eps[i][j] =
           dim == 2 ? 0.5 * (A2[i][j] + A2[j][i]) : 0.5 * (A3[i][j] + A3[j][i]);
-    const mpm::fe_reference::LameModuli moduli(7, 0.3, p.kinematics);
+    const mpm::materials::LameModuli moduli(7, 0.3, p.kinematics);
     const SymmetricTensor<2, dim>       sigma =
       2 * moduli.mu * eps +
       moduli.lambda * trace(eps) * unit_symmetric_tensor<dim>();

@@ -8,8 +8,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <mpm/fe_reference/lame_moduli.h>
 #include <mpm/fe_reference/parameters.h>
+#include <mpm/materials/lame_moduli.h>
 #include <mpm/utilities/expression.h>
 
 #include <memory>
@@ -32,7 +32,7 @@ namespace mpm
       explicit ElasticElement(const AllParameters<dim> &parameters);
 
       const bool                             mixed;
-      const LameModuli                       moduli;
+      const materials::LameModuli                       moduli;
       std::unique_ptr<dealii::FESystem<dim>> fe;
       dealii::MappingQ<dim>                  mapping;
     };
@@ -76,7 +76,7 @@ namespace mpm
 
     private:
       const double                                 density;
-      const LameModuli                            &moduli;
+      const materials::LameModuli                            &moduli;
       const bool                                   mixed;
       const unsigned int                           n;
       const Expression<dim>                        body_force, traction;

@@ -21,6 +21,11 @@ namespace mpm
         gmres,
         direct
       };
+      enum class Preconditioner
+      {
+        amg,              ///< ML AMG on the tangent
+        amg_cell_pressure ///< AMG without the cells' stiff volumetric part
+      };
       double       residual_tolerance          = 1e-8;
       double       absolute_residual_tolerance = 1e-12;
       double       energy_tolerance            = 1e-12;
@@ -28,6 +33,7 @@ namespace mpm
       bool         line_search                 = true;
       unsigned int max_step_cuts               = 6;
       LinearSolver linear_solver               = LinearSolver::automatic;
+      Preconditioner preconditioner            = Preconditioner::amg;
       double       linear_tolerance            = 1e-10;
       unsigned int max_linear_iterations       = 2000;
       double       min_nodal_support           = 1e-4;

@@ -3,6 +3,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
@@ -10,6 +11,7 @@
 #include <mpm/grid/background_grid.h>
 #include <mpm/integrators/implicit_parameters.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -107,6 +109,46 @@ namespace mpm
                  const unsigned int  n,
                  std::vector<Index> &indices) const;
 
+    /**
+     * One body's stiff volumetric part in one cell, for `Preconditioner =
+     * AMG with cell pressure`: (lambda / V) g b^T, with b (dim entries
+     * per node of the cell's list, node-major) the derivative of the
+     * cell's volume change by the nodal increment, g the gradient of the
+     * volume in the current configuration, which the pressure's force
+     * takes (empty: g = b), and lambda the split's lambda_s = lambda -
+     * gamma mu (cell_pressure_gamma).
+     */
+    struct CellPressure
+    {
+      std::vector<double> b, g;
+      double              lambda = 0, mu = 0, volume = 0;
+    };
+
+    /**
+     * What the split leaves of the volumetric stiffness in the AMG part,
+     * in units of mu: it takes lambda_s = lambda - gamma mu off. With
+     * none left (gamma = 0) the Schur complement of Q1-P0 has the
+     * near-checkerboard modes of its inf-sup constant ~h and GMRES's
+     * iterations double per refinement; with lambda itself left, AMG is
+     * slow again. Measured on Cook's membrane (b), gamma = 10 needs the
+     * fewest (doc/theory/implicit.md). Bodies with lambda <= gamma mu
+     * (nu below about 0.455) are not split.
+     */
+    static constexpr double cell_pressure_gamma = 10;
+
+    /// Whether add_cell() with cell pressures splits them off (set-up:
+    /// the preconditioner is AMG with cell pressure).
+    void
+    split_cell_pressure(const bool on)
+    {
+      split = on;
+    }
+    bool
+    splits_cell_pressure() const
+    {
+      return split;
+    }
+
     /// Start an assembly: matrix (if @p with_matrix) and right-hand side
     /// zero.
     void
@@ -118,6 +160,18 @@ namespace mpm
     add_cell(const dealii::FullMatrix<double> &cell_matrix,
              const dealii::Vector<double>     &cell_rhs,
              const std::vector<Index>         &indices);
+    /**
+     * The same for a cell whose tangent @p cell_matrix holds the stiff
+     * parts @p pressures: the matrix receives the tangent without them,
+     * and each becomes a row of B and of C (from b and g, condensed like
+     * the matrix), so that the tangent is matrix + C^T diag(lambda/V) B.
+     * The right-hand side's inhomogeneities come from the whole tangent.
+     */
+    void
+    add_cell(const dealii::FullMatrix<double> &cell_matrix,
+             const dealii::Vector<double>     &cell_rhs,
+             const std::vector<Index>         &indices,
+             const std::vector<CellPressure>  &pressures);
     void
     add_cell_rhs(const dealii::Vector<double> &cell_rhs,
                  const std::vector<Index>     &indices);
@@ -143,7 +197,9 @@ namespace mpm
     /// Solve K x = rhs with the method of @p p (CG, GMRES, or direct when
     /// @p solver asks so); x satisfies the constraints. The near-null
     /// space of the AMG preconditioner is the rigid-body motion of the
-    /// nodes at @p grid's node positions.
+    /// nodes at @p grid's node positions. With cell pressures split off,
+    /// GMRES solves the displacement-pressure system instead
+    /// (solve_with_cell_pressure()).
     SolveResult
     solve(const BackgroundGrid<dim>                     &grid,
           const Parameters::ImplicitSolver              &p,
@@ -171,6 +227,22 @@ namespace mpm
     }
 
   private:
+    /// The rows of B and the Schur complement's diagonal, from this
+    /// assembly's cell pressures (finish_assembly()).
+    void
+    build_cell_pressure();
+
+    /// GMRES on [K_rest, C^T; W B, -l] [x; p] = [rhs; 0], which has the
+    /// x of K x = rhs for K = K_rest + C^T diag(lambda_s/V) B (W = l
+    /// lambda_s/V, l = |b| to give the pressure rows force units),
+    /// preconditioned by [AMG(K_rest), C^T; 0, -S] with S the diagonal
+    /// estimate l (1 + lambda_s / ((gamma + 1) mu)) of the Schur
+    /// complement (doc/theory/implicit.md, "Nearly incompressible").
+    unsigned int
+    solve_with_cell_pressure(const dealii::TrilinosWrappers::PreconditionAMG &amg,
+                             const Parameters::ImplicitSolver &p,
+                             dealii::TrilinosWrappers::MPI::Vector &x);
+
     MPI_Comm                               comm = MPI_COMM_SELF;
     std::vector<Index>                     node_to_global; ///< per local node
     dealii::IndexSet                       owned, relevant;
@@ -181,5 +253,23 @@ namespace mpm
     dealii::TrilinosWrappers::SparseMatrix matrix;
     dealii::TrilinosWrappers::MPI::Vector  rhs;
     double diagonal_scale = 1; ///< of the constrained rows' diagonal
+
+    bool                       split = false;
+    dealii::FullMatrix<double> rest_matrix; ///< scratch of add_cell()
+    /// this assembly's rows of B: columns and values of row r from
+    /// row_start[r], and lambda, mu, V of its cell and body
+    std::vector<Index>                     row_columns;
+    std::vector<double>                    row_values, row_force_values;
+    std::vector<unsigned int>              row_start = {0};
+    std::vector<std::array<double, 3>>     row_moduli;
+    dealii::IndexSet                       pressure_owned;
+    dealii::TrilinosWrappers::SparseMatrix volume_gradient; ///< B
+    dealii::TrilinosWrappers::SparseMatrix force_gradient;  ///< C
+    /// per pressure row: l = |b|, W = l lambda_s / V, and 1/S
+    dealii::TrilinosWrappers::MPI::Vector row_scale, row_weight,
+      schur_inverse;
+    /// 1 + |C^T diag(1/l)|_2 (bound): the tangent's residual over the
+    /// block system's
+    double residual_bound = 1;
   };
 } // namespace mpm

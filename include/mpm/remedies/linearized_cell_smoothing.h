@@ -97,6 +97,22 @@ namespace mpm
                  const unsigned int b,
                  const unsigned int k) const;
 
+      /**
+       * The stiff part lambda g b^T / V of the smoothed tangent of body
+       * @p b in the cell (entries [a dim + k] for node a of the cell's
+       * list, direction k): the pressure's force takes g = sum V f^-T
+       * G_a, the current volume's gradient; the averaged volume change
+       * is b . u / V, with b = sum V_n G_a and V = sum V_n for a rate
+       * model, b = g and V the current volume for a total one (@p
+       * total). False if the body has no particle in the cell.
+       */
+      bool
+      volume_gradient(const unsigned int   b,
+                      const bool           total,
+                      std::vector<double> &g,
+                      std::vector<double> &b_change,
+                      double              &V) const;
+
     private:
       struct Sums
       {

@@ -7,14 +7,15 @@
 
 namespace mpm
 {
-  namespace fe_reference
+  namespace materials
   {
     /**
      * The in-plane Lame constants of the model: 3D and plane strain use
      * lambda = E nu/((1+nu)(1-2nu)); plane stress eliminates sigma_zz = 0,
      * which leaves lambda* = 2 lambda mu/(lambda + 2 mu) = E nu/(1-nu^2).
-     * The mixed formulation needs 1/lambda, finite at nu = 0.5 (zero in
-     * plane strain and 3D).
+     * The FE reference's mixed formulation needs 1/lambda, finite at
+     * nu = 0.5 (zero in plane strain and 3D); the implicit MPM step's
+     * cell-pressure preconditioner splits the lambda part off.
      */
     struct LameModuli
     {
@@ -40,5 +41,5 @@ namespace mpm
           }
       }
     };
-  } // namespace fe_reference
+  } // namespace materials
 } // namespace mpm
