@@ -101,7 +101,11 @@ namespace mpm
       {
         const auto &body = state.bodies[b];
         double      E = 0, nu = 0;
+        // (a filtered body's force is the projection's, whose volumetric
+        // part is not the theta-bar one: the split would leave the rest
+        // of its stiffness indefinite)
         if (!smoothing->smooths(b) || body.is_rigid() ||
+            state.stress_filter->filtered(b) ||
             !body.material->elastic_moduli(E, nu) ||
             state.params.kinematics == KinematicAssumption::uniaxial_stress)
           continue;
@@ -117,9 +121,10 @@ namespace mpm
     if (!any)
       throw InputError(
         name + " splits the cells of nearly incompressible bodies "
-               "(Volumetric smoothing = cell, elastic moduli with lambda > "
-               "10 mu, i.e. nu > 0.455 in 3D and plane strain), and no body "
-               "is one: use Preconditioner = AMG");
+               "(Volumetric smoothing = cell without a Stress filter, "
+               "elastic moduli with lambda > 10 mu, i.e. nu > 0.455 in 3D "
+               "and plane strain), and no body is one: use Preconditioner "
+               "= AMG");
     system.split_cell_pressure(true);
   }
 

@@ -81,10 +81,12 @@ namespace mpm
         "system, preconditioned block-triangularly by AMG on the rest of "
         "the tangent and a diagonal Schur complement. The displacement is "
         "the same as with AMG, to the linear tolerance, which still "
-        "applies to the residual of the tangent. Bodies without "
-        "Volumetric smoothing = cell, or whose material has no elastic "
-        "moduli, keep their whole tangent in the AMG part. Needs an "
-        "iterative Linear solver (GMRES; automatic chooses it).");
+        "applies to the residual of the tangent. Only bodies with "
+        "Volumetric smoothing = cell, no Stress filter, and elastic "
+        "moduli with lambda > 10 mu (nu > 0.455 in 3D and plane strain) "
+        "are split; the others keep their whole tangent in the AMG part, "
+        "and a run with none is refused. Needs an iterative Linear solver "
+        "(GMRES; automatic chooses it).");
       prm.declare_entry("Linear tolerance",
                         "1e-10",
                         Double(0),
