@@ -15,15 +15,8 @@
 //   lines that couple two directions of a node;
 // - a rigid platen pressing a block (nu = 0.49) between slip walls: the
 //   predictor's inhomogeneous constraints, and the platen's reaction.
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_out.h>
-#include <deal.II/grid/grid_tools.h>
-
-#include <cmath>
-#include <fstream>
-#include <sstream>
-
 #include "../tests.h"
+#include "rotated_column.h"
 
 namespace
 {
@@ -90,55 +83,16 @@ end
   /// The column of tests/physics/slip_rotated_column.cc, nearly
   /// incompressible, on the rotated grid.
   std::string
-  rotated_column(const std::string &preconditioner, const double angle)
+  column_case(const std::string &preconditioner, const double angle)
   {
-    const double c = std::cos(angle), s = std::sin(angle);
-    auto         point = [&](const double x, const double y) {
-      std::ostringstream p;
-      p.precision(17);
-      p << c * x - s * y << ", " << s * x + c * y;
-      return p.str();
-    };
-    std::ostringstream prm;
-    prm.precision(17);
-    prm << solver(preconditioner) << R"(
-subsection Grid
-  set Type = mesh file
-  set Mesh file = rotated_column.ucd
-end
-subsection Time stepping
-  set Integrator = quasi-static
-  set Time step control = fixed
-  set Time step = 1
-  set End time = 1
-end
-subsection Boundary conditions
-  set Slip boundary ids = 0, 1, 2
-end
-subsection Bodies
-  subsection Body 0
-    set Geometry = quadrilateral
-    set Corners = )"
-        << point(0, 0) << "; " << point(1, 0) << "; " << point(1, 10) << "; "
-        << point(0, 10) << R"(
-    set Subdivisions = 2, 20
-    set Body force = )"
-        << 10 * s << "; " << -10 * c << R"(
-    subsection Material
-      set Model = neo-Hookean
-      set Density = 80
-      subsection Neo-Hookean
-        set Young's modulus = 1e6
-        set Poisson's ratio = 0.4999
-      end
-    end
-    subsection Locking remedies
+    return solver(preconditioner) +
+           rotated_column::parameters(rotated_column::rotated_grid,
+                                      angle,
+                                      0.4999,
+                                      R"(    subsection Locking remedies
       set Volumetric smoothing = cell
     end
-  end
-end
-)";
-    return prm.str();
+)");
   }
 
   std::string
@@ -257,24 +211,15 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double                             angle = M_PI / 6;
-  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    {
-      dealii::Triangulation<2> grid;
-      dealii::GridGenerator::subdivided_hyper_rectangle(
-        grid, {2, 22}, dealii::Point<2>(0, 0), dealii::Point<2>(1, 11), true);
-      dealii::GridTools::rotate(angle, grid);
-      std::ofstream out("rotated_column.ucd");
-      dealii::GridOut().write_ucd(grid, out);
-    }
-  MPI_Barrier(MPI_COMM_WORLD);
+  rotated_column::write_grid(angle);
 
   compare("Cook's membrane (b)",
           run(cooks_membrane(amg), 1, 1., 1),
           run(cooks_membrane(split), 1, 1., 1),
           8);
   compare("rotated slip column",
-          run(rotated_column(amg, angle), 1, 1., 1),
-          run(rotated_column(split, angle), 1, 1., 1),
+          run(column_case(amg, angle), 1, 1., 1),
+          run(column_case(split, angle), 1, 1., 1),
           0);
   compare("rigid platen",
           run(platen(amg), 2, 0.25, 2),
