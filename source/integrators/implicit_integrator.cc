@@ -96,6 +96,10 @@ namespace mpm
     if (linear_solver == Parameters::ImplicitSolver::LinearSolver::direct)
       throw InputError(name + " preconditions an iterative solver, but "
                               "Implicit solver/Linear solver = direct");
+    if (dim == 1)
+      throw InputError(name + " is for 2D and 3D: in 1D the volume change "
+                              "is the whole strain, nothing locks, and AMG "
+                              "alone takes a seventh of its iterations");
     bool any = false;
     for (unsigned int b = 0; b < state.bodies.size(); ++b)
       {
