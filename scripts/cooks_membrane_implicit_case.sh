@@ -8,7 +8,7 @@
 # FILTER=mass|compliance the assumed-stress filter with that metric;
 # SMOOTHING=cell theta-bar; SUPPORT=x Implicit solver/Minimum nodal
 # support; PRECONDITIONER="AMG with cell pressure" Implicit
-# solver/Preconditioner.
+# solver/Preconditioner, GAMMA its Cell pressure gamma.
 # Usage: scripts/cooks_membrane_implicit_case.sh H OUTDIR > case.prm
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -40,6 +40,7 @@ end
 subsection Implicit solver
   set Minimum nodal support = ${SUPPORT:-1e-4}
   set Preconditioner = ${PRECONDITIONER:-AMG}
+  set Cell pressure gamma = ${GAMMA:-10}
 end
 subsection Output
   set Directory = $out

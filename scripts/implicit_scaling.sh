@@ -21,6 +21,7 @@
 #   block3d-theta, block3d-split  the cube at nu = 0.4999 with theta-bar,
 #           4 to 16 cells per direction, by AMG and by AMG with cell
 #           pressure
+# GAMMA sets Implicit solver/Cell pressure gamma of the split cases.
 # Usage: [CASES="cook-a cook-b block3d"] [RANKS="1 2"] scripts/implicit_scaling.sh
 # (the default cases; the others by name)
 # About 5 minutes for everything on 2 cores. Run it on an otherwise idle
@@ -81,6 +82,7 @@ subsection Bodies
 end
 subsection Implicit solver
   set Preconditioner = ${4:-AMG}
+  set Cell pressure gamma = ${GAMMA:-10}
 end
 PRM
 }

@@ -115,7 +115,7 @@ namespace mpm
           continue;
         const materials::LameModuli moduli(E, nu, state.params.kinematics);
         const double                lambda_s =
-          moduli.lambda - NodalLinearSystem<dim>::cell_pressure_gamma * moduli.mu;
+          moduli.lambda - p.implicit.cell_pressure_gamma * moduli.mu;
         if (!(lambda_s > 0) || !std::isfinite(lambda_s))
           continue;
         split_lambda[b] = lambda_s;
@@ -126,10 +126,10 @@ namespace mpm
       throw InputError(
         name + " splits the cells of nearly incompressible bodies "
                "(Volumetric smoothing = cell without a Stress filter, "
-               "elastic moduli with lambda > 10 mu, i.e. nu > 0.455 in 3D "
-               "and plane strain), and no body is one: use Preconditioner "
-               "= AMG");
-    system.split_cell_pressure(true);
+               "elastic moduli with lambda > Cell pressure gamma times mu, "
+               "i.e. nu > 0.455 in 3D and plane strain at the default 10), "
+               "and no body is one: use Preconditioner = AMG");
+    system.split_cell_pressure(true, p.implicit.cell_pressure_gamma);
   }
 
   template <int dim>

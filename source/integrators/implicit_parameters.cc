@@ -83,10 +83,22 @@ namespace mpm
         "the same as with AMG, to the linear tolerance, which still "
         "applies to the residual of the tangent. Only bodies with "
         "Volumetric smoothing = cell, no Stress filter, and elastic "
-        "moduli with lambda > 10 mu (nu > 0.455 in 3D and plane strain) "
+        "moduli with lambda > gamma mu (Cell pressure gamma; nu > 0.455 "
+        "in 3D and plane strain at the default) "
         "are split; the others keep their whole tangent in the AMG part, "
         "and a run with none is refused. Needs an iterative Linear solver "
         "(GMRES; automatic chooses it).");
+      prm.declare_entry(
+        "Cell pressure gamma",
+        "10",
+        Double(0),
+        "AMG with cell pressure: the split takes lambda - gamma mu of the "
+        "cells' volumetric stiffness out, and leaves gamma mu to AMG; "
+        "bodies with lambda <= gamma mu are not split. With 0 the "
+        "pressure system is the Q1-P0 one, whose near-checkerboard modes "
+        "double the GMRES iterations per refinement; with a large gamma "
+        "AMG is slow again. 10 needs the fewest iterations on Cook's "
+        "membrane at nu = 0.4999 (doc/theory/implicit.md).");
       prm.declare_entry("Linear tolerance",
                         "1e-10",
                         Double(0),
@@ -131,6 +143,7 @@ namespace mpm
       preconditioner = prm.get("Preconditioner") == "AMG" ?
                          Preconditioner::amg :
                          Preconditioner::amg_cell_pressure;
+      cell_pressure_gamma = prm.get_double("Cell pressure gamma");
       linear_tolerance      = prm.get_double("Linear tolerance");
       max_linear_iterations = prm.get_integer("Maximum linear iterations");
       min_nodal_support     = prm.get_double("Minimum nodal support");

@@ -34,6 +34,9 @@ namespace mpm
       unsigned int max_step_cuts               = 6;
       LinearSolver linear_solver               = LinearSolver::automatic;
       Preconditioner preconditioner            = Preconditioner::amg;
+      /// AMG with cell pressure: the volumetric stiffness left in the AMG
+      /// part, in units of mu
+      double cell_pressure_gamma = 10;
       double       linear_tolerance            = 1e-10;
       unsigned int max_linear_iterations       = 2000;
       double       min_nodal_support           = 1e-4;

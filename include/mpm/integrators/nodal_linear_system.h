@@ -116,7 +116,7 @@ namespace mpm
      * cell's volume change by the nodal increment, g the gradient of the
      * volume in the current configuration, which the pressure's force
      * takes (empty: g = b), and lambda the split's lambda_s = lambda -
-     * gamma mu (cell_pressure_gamma).
+     * gamma mu (`Cell pressure gamma`).
      */
     struct CellPressure
     {
@@ -124,24 +124,16 @@ namespace mpm
       double              lambda = 0, mu = 0, volume = 0;
     };
 
-    /**
-     * What the split leaves of the volumetric stiffness in the AMG part,
-     * in units of mu: it takes lambda_s = lambda - gamma mu off. With
-     * none left (gamma = 0) the Schur complement of Q1-P0 has the
-     * near-checkerboard modes of its inf-sup constant ~h and GMRES's
-     * iterations double per refinement; with lambda itself left, AMG is
-     * slow again. Measured on Cook's membrane (b), gamma = 10 needs the
-     * fewest (doc/theory/implicit.md). Bodies with lambda <= gamma mu
-     * (nu below about 0.455) are not split.
-     */
-    static constexpr double cell_pressure_gamma = 10;
+
 
     /// Whether add_cell() with cell pressures splits them off (set-up:
-    /// the preconditioner is AMG with cell pressure).
+    /// the preconditioner is AMG with cell pressure), and the gamma of
+    /// their Schur estimate.
     void
-    split_cell_pressure(const bool on)
+    split_cell_pressure(const bool on, const double gamma)
     {
-      split = on;
+      split               = on;
+      cell_pressure_gamma = gamma;
     }
     bool
     splits_cell_pressure() const
@@ -254,7 +246,8 @@ namespace mpm
     dealii::TrilinosWrappers::MPI::Vector  rhs;
     double diagonal_scale = 1; ///< of the constrained rows' diagonal
 
-    bool                       split = false;
+    bool                       split               = false;
+    double                     cell_pressure_gamma = 10;
     dealii::FullMatrix<double> rest_matrix; ///< scratch of add_cell()
     /// this assembly's rows of B: columns and values of row r from
     /// row_start[r], and lambda, mu, V of its cell and body
