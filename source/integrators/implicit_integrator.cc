@@ -944,7 +944,7 @@ namespace mpm
           if (split_lambda[b] > 0)
             {
               typename NodalLinearSystem<dim>::CellPressure q;
-              const bool total =
+              const bool                                    total =
                 state.bodies[b].material->stress_from_deformation_gradient();
               if (!smoothing->volume_gradient(b, total, q.g, q.b, q.volume))
                 continue;

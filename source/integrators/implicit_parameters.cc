@@ -140,10 +140,10 @@ namespace mpm
                               s == "GMRES"  ? LinearSolver::gmres :
                               s == "direct" ? LinearSolver::direct :
                                               LinearSolver::automatic;
-      preconditioner = prm.get("Preconditioner") == "AMG" ?
-                         Preconditioner::amg :
-                         Preconditioner::amg_cell_pressure;
-      cell_pressure_gamma = prm.get_double("Cell pressure gamma");
+      preconditioner        = prm.get("Preconditioner") == "AMG" ?
+                                Preconditioner::amg :
+                                Preconditioner::amg_cell_pressure;
+      cell_pressure_gamma   = prm.get_double("Cell pressure gamma");
       linear_tolerance      = prm.get_double("Linear tolerance");
       max_linear_iterations = prm.get_integer("Maximum linear iterations");
       min_nodal_support     = prm.get_double("Minimum nodal support");

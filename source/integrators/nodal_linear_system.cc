@@ -4,9 +4,9 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <mpm/integrators/nodal_linear_system.h>
@@ -17,9 +17,9 @@ DEAL_II_DISABLE_EXTRA_DIAGNOSTICS
 DEAL_II_ENABLE_EXTRA_DIAGNOSTICS
 
 #include <algorithm>
-#include <tuple>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace mpm
 {
@@ -251,7 +251,7 @@ namespace mpm
         // the rows b^T C and g^T C of the condensed unknowns: a
         // constrained direction's share goes to the directions its line
         // names
-        const std::vector<double>                &g = q.g.empty() ? q.b : q.g;
+        const std::vector<double> &g = q.g.empty() ? q.b : q.g;
         std::vector<std::tuple<Index, double, double>> row;
         for (unsigned int j = 0; j < n; ++j)
           {
@@ -342,11 +342,16 @@ namespace mpm
   {
     const Index n_rows = row_moduli.size();
     Index       first  = 0; // the rows of the lower ranks
-    MPI_Exscan(&n_rows, &first, 1, Utilities::MPI::mpi_type_id_for_type<Index>, MPI_SUM, comm);
+    MPI_Exscan(&n_rows,
+               &first,
+               1,
+               Utilities::MPI::mpi_type_id_for_type<Index>,
+               MPI_SUM,
+               comm);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       first = 0;
-    const Index n_all  = Utilities::MPI::sum(n_rows, comm);
-    pressure_owned     = IndexSet(n_all);
+    const Index n_all = Utilities::MPI::sum(n_rows, comm);
+    pressure_owned    = IndexSet(n_all);
     pressure_owned.add_range(first, first + n_rows);
     pressure_owned.compress();
     if (n_all == 0)
@@ -394,11 +399,11 @@ namespace mpm
             b_b += row_values[e] * row_values[e];
             g_sum += std::abs(row_force_values[e]);
           }
-        const auto  &[lambda, mu, volume] = row_moduli[r];
-        const double l                    = std::sqrt(b_b);
-        const double w                    = l * lambda / volume;
-        row_scale[first + r]              = l;
-        row_weight[first + r]             = w;
+        const auto &[lambda, mu, volume] = row_moduli[r];
+        const double l                   = std::sqrt(b_b);
+        const double w                   = l * lambda / volume;
+        row_scale[first + r]             = l;
+        row_weight[first + r]            = w;
         schur_inverse[first + r] =
           1. / (l + w * volume / ((cell_pressure_gamma + 1) * mu));
         row_sum_max = std::max(row_sum_max, g_sum / l);
@@ -407,9 +412,8 @@ namespace mpm
       }
     column_sums.compress(VectorOperation::add);
     // |C^T diag(1/l)|_2 <= sqrt(|.|_1 |.|_inf)
-    residual_bound =
-      1. + std::sqrt(Utilities::MPI::max(row_sum_max, comm) *
-                     column_sums.linfty_norm());
+    residual_bound = 1. + std::sqrt(Utilities::MPI::max(row_sum_max, comm) *
+                                    column_sums.linfty_norm());
     row_scale.compress(VectorOperation::insert);
     row_weight.compress(VectorOperation::insert);
     schur_inverse.compress(VectorOperation::insert);
@@ -466,7 +470,7 @@ namespace mpm
     const Parameters::ImplicitSolver        &p,
     TrilinosWrappers::MPI::Vector           &x)
   {
-    const CellPressureOperator       K{
+    const CellPressureOperator K{
       matrix, volume_gradient, force_gradient, row_scale, row_weight};
     const CellPressurePreconditioner P{amg, force_gradient, schur_inverse};
     BlockVector                      y({owned, pressure_owned}, comm);
@@ -475,7 +479,7 @@ namespace mpm
     // The tangent's residual is r_x + C^T diag(1/l) r_p (the pressure
     // rows' residual r_p has force units): below the tolerance when the
     // block residual is below it divided by 1 + |C^T diag(1/l)|.
-    SolverControl control(p.max_linear_iterations,
+    SolverControl            control(p.max_linear_iterations,
                           p.linear_tolerance * rhs.l2_norm() / residual_bound);
     SolverGMRES<BlockVector> gmres(
       control, SolverGMRES<BlockVector>::AdditionalData(100, true));

@@ -125,12 +125,11 @@ namespace mpm
 
     template <int dim>
     bool
-    LinearizedCellSmoothing<dim>::volume_gradient(
-      const unsigned int   b,
-      const bool           total,
-      std::vector<double> &g,
-      std::vector<double> &b_change,
-      double              &V) const
+    LinearizedCellSmoothing<dim>::volume_gradient(const unsigned int   b,
+                                                  const bool           total,
+                                                  std::vector<double> &g,
+                                                  std::vector<double> &b_change,
+                                                  double              &V) const
     {
       const Sums &s = sums[b];
       V             = total ? s.V : s.V_n;

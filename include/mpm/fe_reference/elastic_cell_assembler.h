@@ -32,7 +32,7 @@ namespace mpm
       explicit ElasticElement(const AllParameters<dim> &parameters);
 
       const bool                             mixed;
-      const materials::LameModuli                       moduli;
+      const materials::LameModuli            moduli;
       std::unique_ptr<dealii::FESystem<dim>> fe;
       dealii::MappingQ<dim>                  mapping;
     };
@@ -76,7 +76,7 @@ namespace mpm
 
     private:
       const double                                 density;
-      const materials::LameModuli                            &moduli;
+      const materials::LameModuli                 &moduli;
       const bool                                   mixed;
       const unsigned int                           n;
       const Expression<dim>                        body_force, traction;

@@ -26,20 +26,20 @@ namespace mpm
         amg,              ///< ML AMG on the tangent
         amg_cell_pressure ///< AMG without the cells' stiff volumetric part
       };
-      double       residual_tolerance          = 1e-8;
-      double       absolute_residual_tolerance = 1e-12;
-      double       energy_tolerance            = 1e-12;
-      unsigned int max_iterations              = 20;
-      bool         line_search                 = true;
-      unsigned int max_step_cuts               = 6;
-      LinearSolver linear_solver               = LinearSolver::automatic;
-      Preconditioner preconditioner            = Preconditioner::amg;
+      double         residual_tolerance          = 1e-8;
+      double         absolute_residual_tolerance = 1e-12;
+      double         energy_tolerance            = 1e-12;
+      unsigned int   max_iterations              = 20;
+      bool           line_search                 = true;
+      unsigned int   max_step_cuts               = 6;
+      LinearSolver   linear_solver               = LinearSolver::automatic;
+      Preconditioner preconditioner              = Preconditioner::amg;
       /// AMG with cell pressure: the volumetric stiffness left in the AMG
       /// part, in units of mu
-      double cell_pressure_gamma = 10;
-      double       linear_tolerance            = 1e-10;
-      unsigned int max_linear_iterations       = 2000;
-      double       min_nodal_support           = 1e-4;
+      double       cell_pressure_gamma   = 10;
+      double       linear_tolerance      = 1e-10;
+      unsigned int max_linear_iterations = 2000;
+      double       min_nodal_support     = 1e-4;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -231,9 +231,10 @@ namespace mpm
     /// estimate l (1 + lambda_s / ((gamma + 1) mu)) of the Schur
     /// complement (doc/theory/implicit.md, "Nearly incompressible").
     unsigned int
-    solve_with_cell_pressure(const dealii::TrilinosWrappers::PreconditionAMG &amg,
-                             const Parameters::ImplicitSolver &p,
-                             dealii::TrilinosWrappers::MPI::Vector &x);
+    solve_with_cell_pressure(
+      const dealii::TrilinosWrappers::PreconditionAMG &amg,
+      const Parameters::ImplicitSolver                &p,
+      dealii::TrilinosWrappers::MPI::Vector           &x);
 
     MPI_Comm                               comm = MPI_COMM_SELF;
     std::vector<Index>                     node_to_global; ///< per local node
@@ -259,8 +260,7 @@ namespace mpm
     dealii::TrilinosWrappers::SparseMatrix volume_gradient; ///< B
     dealii::TrilinosWrappers::SparseMatrix force_gradient;  ///< C
     /// per pressure row: l = |b|, W = l lambda_s / V, and 1/S
-    dealii::TrilinosWrappers::MPI::Vector row_scale, row_weight,
-      schur_inverse;
+    dealii::TrilinosWrappers::MPI::Vector row_scale, row_weight, schur_inverse;
     /// 1 + |C^T diag(1/l)|_2 (bound): the tangent's residual over the
     /// block system's
     double residual_bound = 1;
