@@ -31,6 +31,9 @@
 #                   standard MPM and CPDI (doc/benchmarks/strip_footing.md)  9 min
 #   thick_cylinder_implicit  scripts/thick_cylinder_implicit.sh + plot,
 #                   quasi-static (doc/benchmarks/thick_cylinder.md)        35 s
+#   implicit_preconditioner  scripts/implicit_scaling.sh for theta-bar
+#                   at nu = 0.4999 by AMG and by AMG with cell pressure
+#                   (doc/theory/implicit.md), 1 and 2 ranks (QUICK: 1) 90 s
 #   column_implicit scripts/column_implicit_study.sh + plot,
 #                   quasi-static, every family
 #                   (doc/benchmarks/self_weight_column.md)          1 min
@@ -53,7 +56,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit column_implicit cantilever_newmark cantilever_aspect recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -159,6 +162,14 @@ part_thick_cylinder_implicit() {
   mkdir -p "$res/thick-cylinder-implicit" &&
     "$root/scripts/thick_cylinder_implicit.sh" $h > "$res/thick-cylinder-implicit/table.md" &&
     $py "$root/scripts/plot_thick_cylinder_implicit.py" "$res/thick-cylinder-implicit/table.md" "$figs/thick_cylinder_implicit.png"
+}
+
+part_implicit_preconditioner() {
+  local ranks="1 2"
+  [ "$quick" = 1 ] && ranks=1
+  mkdir -p "$res/implicit-preconditioner" &&
+    CASES="cook-b-theta cook-b-split block3d-theta block3d-split" RANKS="$ranks" \
+      "$root/scripts/implicit_scaling.sh" > "$res/implicit-preconditioner/table.md"
 }
 
 part_cantilever_newmark() {
