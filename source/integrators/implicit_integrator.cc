@@ -88,7 +88,7 @@ namespace mpm
     using Preconditioner = Parameters::ImplicitSolver::Preconditioner;
     const auto &p        = state.params;
     split_lambda.assign(state.bodies.size(), 0.);
-    split_mu.assign(state.bodies.size(), 0.);
+    split_rest_modulus.assign(state.bodies.size(), 0.);
     if (p.implicit.preconditioner != Preconditioner::amg_cell_pressure)
       return;
     const std::string name =
@@ -110,17 +110,16 @@ namespace mpm
         // of its stiffness indefinite)
         if (!smoothing->smooths(b) || body.is_rigid() ||
             state.stress_filter->filtered(b) ||
-            !body.material->elastic_moduli(E, nu) ||
-            state.params.kinematics == KinematicAssumption::uniaxial_stress)
+            !body.material->elastic_moduli(E, nu))
           continue;
         const materials::LameModuli moduli(E, nu, state.params.kinematics);
-        const double                lambda_s =
-          moduli.lambda - p.implicit.cell_pressure_gamma * moduli.mu;
+        const double                gamma = p.implicit.cell_pressure_gamma;
+        const double lambda_s             = moduli.lambda - gamma * moduli.mu;
         if (!(lambda_s > 0) || !std::isfinite(lambda_s))
           continue;
-        split_lambda[b] = lambda_s;
-        split_mu[b]     = moduli.mu;
-        any             = true;
+        split_lambda[b]       = lambda_s;
+        split_rest_modulus[b] = (gamma + 1) * moduli.mu;
+        any                   = true;
       }
     if (!any)
       throw InputError(
@@ -129,7 +128,7 @@ namespace mpm
                "elastic moduli with lambda > Cell pressure gamma times mu, "
                "i.e. nu > 0.455 in 3D and plane strain at the default 10), "
                "and no body is one: use Preconditioner = AMG");
-    system.split_cell_pressure(true, p.implicit.cell_pressure_gamma);
+    system.split_cell_pressure(true);
   }
 
   template <int dim>
@@ -938,7 +937,7 @@ namespace mpm
     system.node_indices(nodes, n_nodes, cell_dofs);
     if (with_matrix && system.splits_cell_pressure())
       {
-        // each smoothed body's stiff volumetric part, lambda b b^T / V
+        // each split body's stiff volumetric part, lambda_s g b^T / V
         cell_pressures.clear();
         for (unsigned int b = 0; b < split_lambda.size(); ++b)
           if (split_lambda[b] > 0)
@@ -948,8 +947,8 @@ namespace mpm
                 state.bodies[b].material->stress_from_deformation_gradient();
               if (!smoothing->volume_gradient(b, total, q.g, q.b, q.volume))
                 continue;
-              q.lambda = split_lambda[b];
-              q.mu     = split_mu[b];
+              q.lambda       = split_lambda[b];
+              q.rest_modulus = split_rest_modulus[b];
               cell_pressures.push_back(std::move(q));
             }
         system.add_cell(cell_matrix, cell_rhs, cell_dofs, cell_pressures);

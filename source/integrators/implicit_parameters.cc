@@ -74,10 +74,11 @@ namespace mpm
         "AMG: ML algebraic multigrid on the tangent. Its iterations grow "
         "as sqrt(lambda/mu) when the material is nearly incompressible. "
         "AMG with cell pressure: for bodies with Volumetric smoothing = "
-        "cell, each cell's stiff volumetric part (lambda/V) b b^T, with b "
-        "the gradient of the cell's volume by the nodal increment, is "
-        "taken out of the tangent and carried by a pressure unknown per "
-        "cell and body; GMRES solves the equivalent displacement-pressure "
+        "cell, each cell's stiff volumetric part (lambda/V) g b^T, with b "
+        "the derivative of the cell's volume change by the nodal increment "
+        "and g the gradient of its current volume, on which the pressure "
+        "acts, is taken out of the tangent and carried by a pressure "
+        "unknown per cell and body; GMRES solves the equivalent displacement-pressure "
         "system, preconditioned block-triangularly by AMG on the rest of "
         "the tangent and a diagonal Schur complement. The displacement is "
         "the same as with AMG, to the linear tolerance, which still "
@@ -86,8 +87,8 @@ namespace mpm
         "moduli with lambda > gamma mu (Cell pressure gamma; nu > 0.455 "
         "in 3D and plane strain at the default) "
         "are split; the others keep their whole tangent in the AMG part, "
-        "and a run with none is refused. Needs an iterative Linear solver "
-        "(GMRES; automatic chooses it).");
+        "and a run with none is refused, as is 1D (nothing locks there). "
+        "Needs an iterative Linear solver (GMRES; automatic chooses it).");
       prm.declare_entry(
         "Cell pressure gamma",
         "10",

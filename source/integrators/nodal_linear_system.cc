@@ -289,7 +289,7 @@ namespace mpm
             continue;
           }
         row_start.push_back(row_columns.size());
-        row_moduli.push_back({{q.lambda, q.mu, q.volume}});
+        row_moduli.push_back({{q.lambda, q.rest_modulus, q.volume}});
         const double k = q.lambda / q.volume;
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
@@ -380,11 +380,11 @@ namespace mpm
     force_gradient.compress(VectorOperation::insert);
 
     // Per row: l = |b|, W = l lambda_s / V, and the Schur complement's
-    // estimate (the augmented-Lagrangian one: K_rest holds gamma mu of
-    // the volumetric stiffness, so B K_rest^-1 B^T ~ V / ((gamma + 1) mu)
-    // on the cell's pressure). The column sums of |b| / l bound the map
-    // from the pressure rows' residual to the tangent's (solve), with g
-    // for b where the force's volume gradient is another (rate form).
+    // estimate (the augmented-Lagrangian one: K_rest keeps gamma mu of
+    // the volumetric stiffness, so B K_rest^-1 C^T ~ V / ((gamma + 1) mu)
+    // on the cell's pressure). The row and column sums of |g| / l bound
+    // the map C^T diag(1/l) from the pressure rows' residual to the
+    // tangent's (solve_with_cell_pressure()).
     row_scale.reinit(pressure_owned, comm);
     row_weight.reinit(pressure_owned, comm);
     schur_inverse.reinit(pressure_owned, comm);
@@ -399,14 +399,13 @@ namespace mpm
             b_b += row_values[e] * row_values[e];
             g_sum += std::abs(row_force_values[e]);
           }
-        const auto &[lambda, mu, volume] = row_moduli[r];
-        const double l                   = std::sqrt(b_b);
-        const double w                   = l * lambda / volume;
-        row_scale[first + r]             = l;
-        row_weight[first + r]            = w;
-        schur_inverse[first + r] =
-          1. / (l + w * volume / ((cell_pressure_gamma + 1) * mu));
-        row_sum_max = std::max(row_sum_max, g_sum / l);
+        const auto &[lambda, rest_modulus, volume] = row_moduli[r];
+        const double l                             = std::sqrt(b_b);
+        const double w                             = l * lambda / volume;
+        row_scale[first + r]                       = l;
+        row_weight[first + r]                      = w;
+        schur_inverse[first + r] = 1. / (l + w * volume / rest_modulus);
+        row_sum_max              = std::max(row_sum_max, g_sum / l);
         for (auto e = row_start[r]; e < row_start[r + 1]; ++e)
           column_sums[row_columns[e]] += std::abs(row_force_values[e]) / l;
       }
@@ -534,14 +533,14 @@ namespace mpm
             TrilinosWrappers::PreconditionAMG amg;
             initialize_elasticity_amg(amg, matrix, modes, dim, false);
 
-            SolverControl control(p.max_linear_iterations,
-                                  p.linear_tolerance * rhs.l2_norm());
             if (split && pressure_owned.size() > 0)
               {
                 result.iterations = solve_with_cell_pressure(amg, p, x);
                 constraints().distribute(x);
                 return result;
               }
+            SolverControl control(p.max_linear_iterations,
+                                  p.linear_tolerance * rhs.l2_norm());
             if (solver == LinearSolver::cg)
               {
                 SolverCG<TrilinosWrappers::MPI::Vector> cg(control);

@@ -250,10 +250,11 @@ namespace mpm
     std::vector<dealii::SymmetricTensor<2, dim>> filtered_changes;
     /// the filtered force of one body in one cell (add_filtered_force())
     std::vector<double> filtered_force;
-    /// `Preconditioner = AMG with cell pressure`: per body, the in-plane
-    /// Lame constants its cells' stiff part is split with (lambda 0: not
-    /// split), and the parts of one cell
-    std::vector<double> split_lambda, split_mu;
+    /// `Preconditioner = AMG with cell pressure`: per body, the lambda_s
+    /// its cells' stiff part is split with (0: not split) and the
+    /// volumetric stiffness (gamma + 1) mu the rest keeps; the parts of
+    /// one cell
+    std::vector<double> split_lambda, split_rest_modulus;
     std::vector<typename NodalLinearSystem<dim>::CellPressure> cell_pressures;
     dealii::FullMatrix<double>                                 cell_matrix;
     dealii::Vector<double>                                     cell_rhs;

@@ -115,25 +115,24 @@ namespace mpm
      * per node of the cell's list, node-major) the derivative of the
      * cell's volume change by the nodal increment, g the gradient of the
      * volume in the current configuration, which the pressure's force
-     * takes (empty: g = b), and lambda the split's lambda_s = lambda -
-     * gamma mu (`Cell pressure gamma`).
+     * takes (empty: g = b), lambda the split's lambda_s = lambda - gamma
+     * mu (`Cell pressure gamma`), and rest_modulus = (gamma + 1) mu the
+     * volumetric stiffness the rest keeps, for the Schur estimate.
      */
     struct CellPressure
     {
       std::vector<double> b, g;
-      double              lambda = 0, mu = 0, volume = 0;
+      double              lambda = 0, rest_modulus = 0, volume = 0;
     };
 
 
 
     /// Whether add_cell() with cell pressures splits them off (set-up:
-    /// the preconditioner is AMG with cell pressure), and the gamma of
-    /// their Schur estimate.
+    /// the preconditioner is AMG with cell pressure).
     void
-    split_cell_pressure(const bool on, const double gamma)
+    split_cell_pressure(const bool on)
     {
-      split               = on;
-      cell_pressure_gamma = gamma;
+      split = on;
     }
     bool
     splits_cell_pressure() const
@@ -228,8 +227,8 @@ namespace mpm
     /// x of K x = rhs for K = K_rest + C^T diag(lambda_s/V) B (W = l
     /// lambda_s/V, l = |b| to give the pressure rows force units),
     /// preconditioned by [AMG(K_rest), C^T; 0, -S] with S the diagonal
-    /// estimate l (1 + lambda_s / ((gamma + 1) mu)) of the Schur
-    /// complement (doc/theory/implicit.md, "Nearly incompressible").
+    /// estimate l (1 + lambda_s / rest_modulus) of the Schur complement
+    /// (doc/theory/implicit.md, "Nearly incompressible").
     unsigned int
     solve_with_cell_pressure(
       const dealii::TrilinosWrappers::PreconditionAMG &amg,
@@ -247,11 +246,10 @@ namespace mpm
     dealii::TrilinosWrappers::MPI::Vector  rhs;
     double diagonal_scale = 1; ///< of the constrained rows' diagonal
 
-    bool                       split               = false;
-    double                     cell_pressure_gamma = 10;
+    bool                       split = false;
     dealii::FullMatrix<double> rest_matrix; ///< scratch of add_cell()
-    /// this assembly's rows of B: columns and values of row r from
-    /// row_start[r], and lambda, mu, V of its cell and body
+    /// this assembly's rows of B and C: columns and values of row r from
+    /// row_start[r], and lambda_s, rest_modulus, V of its cell and body
     std::vector<Index>                     row_columns;
     std::vector<double>                    row_values, row_force_values;
     std::vector<unsigned int>              row_start = {0};
