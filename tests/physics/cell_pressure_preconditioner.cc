@@ -16,6 +16,7 @@
 // - a rigid platen pressing a block (nu = 0.49) between slip walls: the
 //   predictor's inhomogeneous constraints, and the platen's reaction.
 #include "../tests.h"
+#include "platen_block.h"
 #include "rotated_column.h"
 
 namespace
@@ -95,56 +96,18 @@ end
 )");
   }
 
+  /// The block of tests/physics/rigid_platen.cc at nu = 0.49 with
+  /// theta-bar, pressed at a constant speed.
   std::string
   platen(const std::string &preconditioner)
   {
-    return solver(preconditioner) + R"(
-set Number of bodies = 2
-set Kinematic assumption = plane strain
-subsection Grid
-  set Lower corner = 0, 0
-  set Upper corner = 1, 1.5
-  set Subdivisions = 4, 6
-end
-subsection Time stepping
-  set Integrator = quasi-static
-  set Time step control = fixed
-  set Time step = 0.25
-  set End time = 0.5
-end
-subsection Boundary conditions
-  set Slip boundary ids = 0, 1, 2
-end
-subsection Bodies
-  subsection Body 0
-    set Lower corner = 0, 0
-    set Upper corner = 1, 1
-    set Subdivisions = 4, 4
-    subsection Material
-      set Model = linear elastic
-      set Density = 1000
-      subsection Linear elastic
-        set Young's modulus = 1e6
-        set Poisson's ratio = 0.49
-      end
-    end
-    subsection Locking remedies
+    return solver(preconditioner) +
+           platen_block::parameters("0.49",
+                                    "-0.2",
+                                    R"(    subsection Locking remedies
       set Volumetric smoothing = cell
     end
-  end
-  subsection Body 1
-    set Lower corner = 0, 1
-    set Upper corner = 1, 1.25
-    set Subdivisions = 4, 1
-    set Prescribed velocity = 0; -0.2
-    set Prescribed directions = y
-    subsection Material
-      set Model = rigid
-      set Density = 1000
-    end
-  end
-end
-)";
+)");
   }
 
   struct Result

@@ -15,60 +15,15 @@
 #include <algorithm>
 
 #include "../tests.h"
+#include "platen_block.h"
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  mpm_test::Case<2>                        c(R"(
-set Number of bodies = 2
-set Kinematic assumption = plane strain
-subsection Grid
-  set Lower corner = 0, 0
-  set Upper corner = 1, 1.5
-  set Subdivisions = 4, 6
-end
-subsection Time stepping
-  set Integrator = quasi-static
-  set Time step control = fixed
-  set Time step = 0.25
-  set End time = 0.5
-end
-subsection Boundary conditions
-  set Slip boundary ids = 0, 1, 2
-end
-subsection Output
-  set Directory = results
-end
-subsection Bodies
-  subsection Body 0
-    set Lower corner = 0, 0
-    set Upper corner = 1, 1
-    set Subdivisions = 4, 4
-    subsection Material
-      set Model = linear elastic
-      set Density = 1000
-      subsection Linear elastic
-        set Young's modulus = 1e6
-        set Poisson's ratio = 0
-      end
-    end
-  end
-  subsection Body 1
-    set Lower corner = 0, 1
-    set Upper corner = 1, 1.25
-    set Subdivisions = 4, 1
-    set Prescribed velocity = 0; t < 0.25 ? -2 : -1
-    set Prescribed directions = y
-    subsection Material
-      set Model = rigid
-      set Density = 1000
-    end
-  end
-end)",
-                      2);
-  auto                                    &sim = *c.simulator;
-  const double                             E = 1e6, nu = 0;
+  mpm_test::Case<2> c(platen_block::parameters("0", "t < 0.25 ? -2 : -1"), 2);
+  auto             &sim = *c.simulator;
+  const double      E = 1e6, nu = 0;
   const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)); // lambda + 2 mu
   double       strain = 0, height = 1;
   for (const double settlement : {0.5, 0.25})
