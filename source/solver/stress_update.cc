@@ -81,7 +81,10 @@ namespace mpm
         return false;
       if (!domains)
         {
-          geo.values_and_gradients(p.get_reference_location(), N, G);
+          if (any_node) // the node average's Q1 values too
+            geo.values_and_gradients(p.get_reference_location(), N, G);
+          else
+            geo.gradients(p.get_reference_location(), G);
           step_kinematics<dim>(transfer::velocity_gradient<dim>(in, nodes, G),
                                prop,
                                dt,
@@ -195,7 +198,8 @@ namespace mpm
       result.stable_time_step =
         std::min(result.stable_time_step, h / (c + std::sqrt(speed2)));
 
-      if (!std::isfinite(sigma.norm()) && result.error.empty())
+      // finite exactly when the norm is, without its square root
+      if (!std::isfinite(sigma * sigma) && result.error.empty())
         {
           std::ostringstream s;
           s << "non-finite stress of particle " << p.get_id() << " at ("

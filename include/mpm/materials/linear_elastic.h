@@ -59,8 +59,8 @@ namespace mpm
       bool
       elastic_moduli(double &E, double &nu) const override
       {
-        E  = constants.youngs_modulus;
-        nu = constants.poissons_ratio;
+        E  = constants.youngs_modulus();
+        nu = constants.poissons_ratio();
         return true;
       }
 

@@ -104,12 +104,12 @@ namespace mpm
       }
 
       /// Values and physical gradients at xi.
-      void
-      values_and_gradients(const Point<dim> &xi,
-                           double           *N,
-                           Tensor<1, dim>   *grad) const
+      /// The gradients of the 2^dim shape functions at xi. The box path
+      /// (a few multiplications) is inlined into the particle loops; the
+      /// Jacobian of a general cell is not.
+      inline __attribute__((always_inline)) void
+      gradients(const Point<dim> &xi, Tensor<1, dim> *grad) const
       {
-        values(xi, N);
         reference_gradients(xi, grad);
         if (is_box)
           {
@@ -118,12 +118,26 @@ namespace mpm
                 grad[v][d] *= inverse_extent[d];
           }
         else
-          {
-            const Tensor<2, dim> JinvT =
-              dealii::transpose(dealii::invert(jacobian(xi)));
-            for (unsigned int v = 0; v < n_vertices; ++v)
-              grad[v] = JinvT * grad[v];
-          }
+          map_reference_gradients(xi, grad);
+      }
+
+      inline __attribute__((always_inline)) void
+      values_and_gradients(const Point<dim> &xi,
+                           double           *N,
+                           Tensor<1, dim>   *grad) const
+      {
+        values(xi, N);
+        gradients(xi, grad);
+      }
+
+      /// grad N = J^-T grad_xi N of a general (not box) cell, in place.
+      __attribute__((noinline)) void
+      map_reference_gradients(const Point<dim> &xi, Tensor<1, dim> *grad) const
+      {
+        const Tensor<2, dim> JinvT =
+          dealii::transpose(dealii::invert(jacobian(xi)));
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          grad[v] = JinvT * grad[v];
       }
 
       /**
