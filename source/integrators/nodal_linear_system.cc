@@ -427,6 +427,8 @@ namespace mpm
     {
       const TrilinosWrappers::SparseMatrix &K_rest, &B, &C;
       const TrilinosWrappers::MPI::Vector  &scale, &weight;
+      /// l p, kept between the solver's calls (no allocation per call)
+      mutable TrilinosWrappers::MPI::Vector lp;
 
       void
       vmult(BlockVector &dst, const BlockVector &src) const
@@ -435,7 +437,7 @@ namespace mpm
         C.Tvmult_add(dst.block(0), src.block(1));
         B.vmult(dst.block(1), src.block(0));
         dst.block(1).scale(weight);
-        TrilinosWrappers::MPI::Vector lp(src.block(1));
+        lp = src.block(1);
         lp.scale(scale);
         dst.block(1) -= lp;
       }
@@ -447,6 +449,8 @@ namespace mpm
       const TrilinosWrappers::PreconditionAMG &amg;
       const TrilinosWrappers::SparseMatrix    &C;
       const TrilinosWrappers::MPI::Vector     &schur_inverse;
+      /// r_x - C^T p, kept between the solver's calls
+      mutable TrilinosWrappers::MPI::Vector r;
 
       void
       vmult(BlockVector &dst, const BlockVector &src) const
@@ -454,7 +458,7 @@ namespace mpm
         // p = -S^-1 r_p, x = AMG (r_x - C^T p)
         dst.block(1) = src.block(1);
         dst.block(1).scale(schur_inverse);
-        TrilinosWrappers::MPI::Vector r(src.block(0));
+        r = src.block(0);
         C.Tvmult_add(r, dst.block(1));
         amg.vmult(dst.block(0), r);
         dst.block(1) *= -1.;
@@ -470,8 +474,8 @@ namespace mpm
     TrilinosWrappers::MPI::Vector           &x)
   {
     const CellPressureOperator K{
-      matrix, volume_gradient, force_gradient, row_scale, row_weight};
-    const CellPressurePreconditioner P{amg, force_gradient, schur_inverse};
+      matrix, volume_gradient, force_gradient, row_scale, row_weight, {}};
+    const CellPressurePreconditioner P{amg, force_gradient, schur_inverse, {}};
     BlockVector                      y({owned, pressure_owned}, comm);
     BlockVector                      f({owned, pressure_owned}, comm);
     f.block(0) = rhs;
