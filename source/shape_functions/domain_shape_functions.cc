@@ -279,9 +279,15 @@ namespace mpm
       if (!(cw.quality > min_domain_quality))
         return Status::collapsed;
 
-      constexpr unsigned int nv = n_q1<dim>;
-      s.n                       = 0;
-      for (unsigned int c = 0; c < CornerWeights<dim>::n_corners; ++c)
+      constexpr unsigned int nv        = n_q1<dim>;
+      constexpr unsigned int n_corners = CornerWeights<dim>::n_corners;
+      s.n                              = 0;
+      // A corner in a cell that an earlier corner was in adds to that
+      // cell's entries, the ones add() would find, without searching.
+      unsigned int seen_cell[n_corners];
+      unsigned int seen_entry[n_corners][nv];
+      unsigned int n_seen = 0;
+      for (unsigned int c = 0; c < n_corners; ++c)
         {
           unsigned int corner_cell;
           Point<dim>   corner_xi;
@@ -291,9 +297,21 @@ namespace mpm
             return status;
           double N[nv];
           Q1Cell<dim>::values(corner_xi, N);
-          const unsigned int *nodes = grid.nodes(corner_cell);
-          for (unsigned int v = 0; v < nv; ++v)
-            s.add(nodes[v], cw.w[c] * N[v], N[v] * cw.g[c]);
+          unsigned int j = 0;
+          while (j < n_seen && seen_cell[j] != corner_cell)
+            ++j;
+          if (j < n_seen)
+            for (unsigned int v = 0; v < nv; ++v)
+              s.add_to_entry(seen_entry[j][v], cw.w[c] * N[v], N[v] * cw.g[c]);
+          else
+            {
+              const unsigned int *nodes = grid.nodes(corner_cell);
+              seen_cell[n_seen]         = corner_cell;
+              for (unsigned int v = 0; v < nv; ++v)
+                seen_entry[n_seen][v] =
+                  s.add(nodes[v], cw.w[c] * N[v], N[v] * cw.g[c]);
+              ++n_seen;
+            }
         }
       return Status::ok;
     }

@@ -29,7 +29,9 @@ namespace mpm
       dealii::Tensor<1, dim> gradient[capacity];
 
       /// Add S and grad S of node @p i (merged if already listed).
-      void
+      /// Add S and grad S to node i's entry (a new one if i has none);
+      /// returns the entry.
+      unsigned int
       add(const unsigned int            i,
           const double                  S,
           const dealii::Tensor<1, dim> &grad_S)
@@ -37,14 +39,23 @@ namespace mpm
         for (unsigned int k = 0; k < n; ++k)
           if (node[k] == i)
             {
-              value[k] += S;
-              gradient[k] += grad_S;
-              return;
+              add_to_entry(k, S, grad_S);
+              return k;
             }
         node[n]     = i;
         value[n]    = S;
         gradient[n] = grad_S;
-        ++n;
+        return n++;
+      }
+
+      /// Add S and grad S to entry k, which add() returned.
+      void
+      add_to_entry(const unsigned int            k,
+                   const double                  S,
+                   const dealii::Tensor<1, dim> &grad_S)
+      {
+        value[k] += S;
+        gradient[k] += grad_S;
       }
     };
   } // namespace shape_functions
