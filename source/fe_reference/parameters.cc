@@ -173,8 +173,8 @@ namespace mpm
           else
             {
               const auto c   = materials::elasticity::parse_parameters(prm);
-              youngs_modulus = c.youngs_modulus;
-              poissons_ratio = c.poissons_ratio;
+              youngs_modulus = c.youngs_modulus();
+              poissons_ratio = c.poissons_ratio();
             }
         }
       catch (const InputError &e)
