@@ -103,8 +103,7 @@ namespace mpm
         return J;
       }
 
-      /// Values and physical gradients at xi.
-      /// The gradients of the 2^dim shape functions at xi. The box path
+      /// Physical gradients of the 2^dim shape functions at xi. The box path
       /// (a few multiplications) is inlined into the particle loops; the
       /// Jacobian of a general cell is not.
       inline __attribute__((always_inline)) void
@@ -121,6 +120,7 @@ namespace mpm
           map_reference_gradients(xi, grad);
       }
 
+      /// Values and physical gradients at xi.
       inline __attribute__((always_inline)) void
       values_and_gradients(const Point<dim> &xi,
                            double           *N,
