@@ -28,9 +28,8 @@ namespace mpm
       double                 value[capacity];
       dealii::Tensor<1, dim> gradient[capacity];
 
-      /// Add S and grad S of node @p i (merged if already listed).
-      /// Add S and grad S to node i's entry (a new one if i has none);
-      /// returns the entry.
+      /// Add S and grad S of node @p i (merged if already listed);
+      /// returns its entry.
       unsigned int
       add(const unsigned int            i,
           const double                  S,
