@@ -5,6 +5,7 @@
 #include <mpm/transfer/grid_to_particle.h>
 #include <mpm/utilities/input_error.h>
 
+#include <limits>
 #include <sstream>
 
 namespace mpm
@@ -70,10 +71,12 @@ namespace mpm
     // stencils were built.
     if (state.domain_functions)
       state.domain_functions->forget_stencils();
+    const double t_new = state.current_time + dt;
     if (state.params.time.scheme == Scheme::usf)
       {
         particle_to_grid(P2GContent::mass_momentum);
         nodal_velocity_from_momentum();
+        resolve_contact(false, state.current_time);
         update_stress(dt);
         // cpGIMP and CPDI take their domains from F, which the stress
         // update has just changed: the force pass and G2P see the new
@@ -86,18 +89,29 @@ namespace mpm
         particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
                                        P2GContent::force);
         update_grid(dt);
+        resolve_contact(true, t_new);
         grid_to_particle(dt);
       }
     else
       {
         particle_to_grid(P2GContent::mass_momentum_force);
         update_grid(dt);
+        resolve_contact(true, t_new);
         grid_to_particle(dt);
         if (state.params.time.scheme == Scheme::musl)
-          remap_momentum();
+          {
+            remap_momentum();
+            resolve_contact(false, t_new);
+          }
         update_stress(dt);
       }
     update_positions();
+    if (state.contact)
+      {
+        state.contact->combine(state.background, state.p2g, state.kinematics);
+        contact_nodes = Utilities::MPI::sum(
+          static_cast<double>(state.contact->n_contact_nodes()), state.comm);
+      }
   }
 
   template <int dim>
@@ -106,6 +120,27 @@ namespace mpm
   {
     particle_to_grid(transfer::P2GContent::mass_momentum);
     nodal_velocity_from_momentum();
+    resolve_contact(false, state.current_time);
+    if (state.contact)
+      state.contact->combine(state.background, state.p2g, state.kinematics);
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  ExplicitIntegrator<dim>::statistics_columns() const
+  {
+    if (!state.contact)
+      return {};
+    return {"contact_nodes"};
+  }
+
+  template <int dim>
+  std::vector<double>
+  ExplicitIntegrator<dim>::statistics_values() const
+  {
+    if (!state.contact)
+      return {};
+    return {contact_nodes};
   }
 
   template <int dim>
@@ -113,7 +148,8 @@ namespace mpm
   ExplicitIntegrator<dim>::particle_to_grid(const transfer::P2GContent content)
   {
     // Remedies around the force pass change the forces of this pass only
-    // (the 1D convection correction: doc/theory/convection_correction.md).
+    // (the 1D convection correction: doc/theory/convection_correction.md;
+    // refused with contact).
     const bool force_pass =
       content == transfer::P2GContent::force ||
       content == transfer::P2GContent::mass_momentum_force;
@@ -127,18 +163,27 @@ namespace mpm
                                   state.current_time);
         }
     {
-      TimerOutput::Scope              t(state.timer, "P2G");
-      const transfer::P2GContext<dim> context{transfer_context(),
-                                              state.bodies,
-                                              *state.stress_filter,
-                                              state.current_time,
-                                              content,
-                                              state.p2g};
-      state.local_error.record(transfer::particle_to_grid(context));
+      TimerOutput::Scope t(state.timer, "P2G");
+      for (unsigned int f = 0; f < n_fields(); ++f)
+        {
+          const transfer::P2GContext<dim> context{transfer_context(f),
+                                                  state.bodies,
+                                                  *state.stress_filter,
+                                                  state.current_time,
+                                                  content,
+                                                  p2g(f)};
+          state.local_error.record(transfer::particle_to_grid(context));
+        }
     }
     if (force_pass)
       for (const auto &hook : state.force_pass_hooks)
         hook->after_force_pass(state.p2g);
+    if (state.contact && content != transfer::P2GContent::force)
+      {
+        TimerOutput::Scope t(state.timer, "contact");
+        state.contact->compute_mass_gradients(state.background,
+                                              state.particle_handler);
+      }
   }
 
   template <int dim>
@@ -146,14 +191,15 @@ namespace mpm
   ExplicitIntegrator<dim>::nodal_velocity_from_momentum()
   {
     TimerOutput::Scope t(state.timer, "grid update");
-    state.local_error.record(
-      nodal_velocity(state.background,
-                     state.p2g,
-                     state.p2g,
-                     transfer::P2GLayout<dim>::n_components,
-                     transfer::P2GLayout<dim>::momentum,
-                     state.min_nodal_mass,
-                     state.kinematics));
+    for (unsigned int f = 0; f < n_fields(); ++f)
+      state.local_error.record(
+        nodal_velocity(state.background,
+                       p2g(f),
+                       p2g(f),
+                       transfer::P2GLayout<dim>::n_components,
+                       transfer::P2GLayout<dim>::momentum,
+                       state.min_nodal_mass,
+                       kinematics(f)));
   }
 
   template <int dim>
@@ -161,12 +207,29 @@ namespace mpm
   ExplicitIntegrator<dim>::update_grid(const double dt)
   {
     TimerOutput::Scope t(state.timer, "grid update");
-    state.local_error.record(::mpm::update_grid(state.background,
-                                                state.p2g,
-                                                dt,
-                                                state.params.time.damping,
-                                                state.min_nodal_mass,
-                                                state.kinematics));
+    for (unsigned int f = 0; f < n_fields(); ++f)
+      state.local_error.record(::mpm::update_grid(state.background,
+                                                  p2g(f),
+                                                  dt,
+                                                  state.params.time.damping,
+                                                  state.min_nodal_mass,
+                                                  kinematics(f)));
+  }
+
+  template <int dim>
+  void
+  ExplicitIntegrator<dim>::resolve_contact(const bool   with_increment,
+                                           const double t)
+  {
+    if (!state.contact)
+      return;
+    TimerOutput::Scope t_scope(state.timer, "contact");
+    state.local_error.record(state.contact->resolve(state.background,
+                                                    state.bodies,
+                                                    state.min_nodal_mass,
+                                                    with_increment,
+                                                    t,
+                                                    state.current_time));
   }
 
   template <int dim>
@@ -177,12 +240,13 @@ namespace mpm
     // MUSL's re-map is fused into G2P (one pass over the particles).
     const bool fused_remap =
       state.params.time.scheme == Parameters::TimeStepping::Scheme::musl;
-    state.local_error.record(transfer::grid_to_particle(
-      transfer::G2PContext<dim>{transfer_context(),
-                                state.kinematics,
-                                dt,
-                                state.params.time.flip_fraction,
-                                fused_remap ? &state.remap : nullptr}));
+    for (unsigned int f = 0; f < n_fields(); ++f)
+      state.local_error.record(transfer::grid_to_particle(
+        transfer::G2PContext<dim>{transfer_context(f),
+                                  kinematics(f),
+                                  dt,
+                                  state.params.time.flip_fraction,
+                                  fused_remap ? &remap(f) : nullptr}));
   }
 
   template <int dim>
@@ -191,20 +255,32 @@ namespace mpm
   {
     // The re-mapped momentum is in `remap` (G2P filled it).
     TimerOutput::Scope t(state.timer, "MUSL re-map");
-    state.local_error.record(nodal_velocity(state.background,
-                                            state.p2g,
-                                            state.remap,
-                                            dim,
-                                            0,
-                                            state.min_nodal_mass,
-                                            state.kinematics));
+    for (unsigned int f = 0; f < n_fields(); ++f)
+      state.local_error.record(nodal_velocity(state.background,
+                                              p2g(f),
+                                              remap(f),
+                                              dim,
+                                              0,
+                                              state.min_nodal_mass,
+                                              kinematics(f)));
   }
 
   template <int dim>
   void
   ExplicitIntegrator<dim>::update_stress(const double dt)
   {
-    state.stable_dt = state.update_particle_stress(dt);
+    if (!state.contact)
+      {
+        state.stable_dt = state.update_particle_stress(dt);
+        return;
+      }
+    state.stable_dt = std::numeric_limits<double>::max();
+    for (unsigned int f = 0; f < n_fields(); ++f)
+      state.stable_dt =
+        std::min(state.stable_dt,
+                 state.update_particle_stress(dt,
+                                              kinematics(f),
+                                              state.contact->selection(f)));
   }
 
   template <int dim>
@@ -213,23 +289,54 @@ namespace mpm
   {
     TimerOutput::Scope t(state.timer, "position update");
     if (family().tracks_corners)
-      state.local_error.record(
-        transfer::move_domain_corners(state.background,
-                                      state.particle_handler,
-                                      state.kinematics,
-                                      state.last_dt,
-                                      *state.domain_functions));
+      for (unsigned int f = 0; f < n_fields(); ++f)
+        state.local_error.record(
+          transfer::move_domain_corners(state.background,
+                                        state.particle_handler,
+                                        kinematics(f),
+                                        state.last_dt,
+                                        *state.domain_functions,
+                                        transfer_context(f).only));
     state.relocate_moved_particles();
   }
 
   template <int dim>
+  unsigned int
+  ExplicitIntegrator<dim>::n_fields() const
+  {
+    return state.contact ? state.contact->n_fields() : 1;
+  }
+
+  template <int dim>
+  NodalVector &
+  ExplicitIntegrator<dim>::p2g(const unsigned int f)
+  {
+    return state.contact ? state.contact->p2g(f) : state.p2g;
+  }
+
+  template <int dim>
+  NodalVector &
+  ExplicitIntegrator<dim>::kinematics(const unsigned int f)
+  {
+    return state.contact ? state.contact->kinematics(f) : state.kinematics;
+  }
+
+  template <int dim>
+  NodalVector &
+  ExplicitIntegrator<dim>::remap(const unsigned int f)
+  {
+    return state.contact ? state.contact->remap(f) : state.remap;
+  }
+
+  template <int dim>
   transfer::TransferContext<dim>
-  ExplicitIntegrator<dim>::transfer_context() const
+  ExplicitIntegrator<dim>::transfer_context(const unsigned int f) const
   {
     return {state.background,
             state.particle_handler,
             state.domain_functions.get(),
-            state.layout.affine()};
+            state.layout.affine(),
+            state.contact ? state.contact->selection(f) : FieldSelection()};
   }
 
   template <int dim>

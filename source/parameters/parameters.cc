@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm/benchmarks/benchmark_registry.h>
+#include <mpm/contact/multi_field_contact.h>
 #include <mpm/grid/quadrilateral_mesh.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/parameters/parsing.h>
@@ -412,12 +413,15 @@ namespace mpm
         Patterns::Anything(),
         "Empty: the body moves with the grid. Otherwise the body is rigid "
         "and moves with this velocity [m/s], dim expressions of t "
-        "separated by ';'; it needs Material/Model = rigid and Time "
-        "stepping/Integrator = quasi-static. The grid nodes it reaches "
-        "follow its displacement over each step: in the Prescribed "
-        "directions where they also carry another body, in every direction "
-        "where they do not. A wall's constraint wins over the body's. Its "
-        "reaction is written to the statistics file (reaction_x, ...).");
+        "separated by ';'; it needs Material/Model = rigid, and Time "
+        "stepping/Integrator = quasi-static or a Contact law. "
+        "Quasi-static: the grid nodes it reaches follow its displacement "
+        "over each step: in the Prescribed directions where they also carry "
+        "another body, in every direction where they do not; its reaction "
+        "is written to the statistics file (reaction_x, ...). With a "
+        "Contact law it is a velocity field of its own, which the other "
+        "fields meet by the law as if its mass were infinite. A wall's "
+        "constraint wins over the body's.");
       prm.declare_entry(
         "Prescribed directions",
         dim == 1 ? "x" :
@@ -430,6 +434,14 @@ namespace mpm
         "moves the nodes it shares with another body: all for a rough "
         "contact, the normal one for a smooth one (a smooth footing "
         "pressed down in y: y).");
+      prm.declare_entry(
+        "Contact field",
+        "-1",
+        Patterns::Integer(-1, 255),
+        "The velocity field of the body when Contact/Contact law is not "
+        "none: bodies with the same number share a field (and stick where "
+        "they meet), bodies of different fields meet by the contact law. "
+        "-1: a field of the body's own.");
       prm.enter_subsection("Material");
       materials::declare_material_parameters(prm);
       prm.leave_subsection();
@@ -462,6 +474,7 @@ namespace mpm
       traction                = prm.get("Traction");
       traction_boundary_ids   = parse_id_list(prm.get("Traction boundary ids"));
       prescribed_velocity     = prm.get("Prescribed velocity");
+      contact_field           = prm.get_integer("Contact field");
       prescribed_directions   = 0;
       for (const auto &d :
            Utilities::split_string_list(prm.get("Prescribed directions")))
@@ -934,6 +947,7 @@ namespace mpm
       Checkpointing::declare_parameters(prm);
       LoadBalancing::declare_parameters(prm);
       ImplicitSolver::declare_parameters(prm);
+      Contact::declare_parameters(prm);
       prm.enter_subsection("Bodies");
       for (unsigned int i = 0; i < n_bodies; ++i)
         {
@@ -989,6 +1003,7 @@ namespace mpm
       implicit.parse_parameters(prm);
       bodies.resize(n_bodies);
       const ConstantsScope scope(constants);
+      contact.parse_parameters(prm);
       prm.enter_subsection("Bodies");
       for (unsigned int i = 0; i < n_bodies; ++i)
         {
@@ -1004,6 +1019,7 @@ namespace mpm
           prm.leave_subsection();
         }
       prm.leave_subsection();
+      contact::check_parameters(*this);
     }
 
     template struct Body<1>;

@@ -128,11 +128,13 @@ namespace mpm
         if (rigid)
           {
             if (params.time.integrator !=
-                Parameters::TimeStepping::Integrator::quasi_static)
+                  Parameters::TimeStepping::Integrator::quasi_static &&
+                !params.contact.enabled())
               throw InputError(where +
                                "/Prescribed velocity: a body of prescribed "
                                "motion needs Time stepping/Integrator = "
-                               "quasi-static");
+                               "quasi-static, or a Contact/Contact law "
+                               "other than none");
             body.prescribed_velocity =
               Expression<dim>(body.prm.prescribed_velocity,
                               dim,

@@ -17,6 +17,8 @@ namespace mpm
     background.initialize_vector(kinematics,
                                  KinematicsLayout<dim>::n_components);
     background.initialize_vector(remap, dim);
+    if (contact)
+      contact->initialize_vectors(background);
     if (remedies::VolumetricSmoothing<dim>::through_nodes(bodies))
       background.initialize_vector(
         volume_sums, remedies::VolumetricSmoothing<dim>::n_node_sums);
@@ -59,16 +61,19 @@ namespace mpm
 
   template <int dim>
   double
-  SimulationState<dim>::update_particle_stress(const double dt)
+  SimulationState<dim>::update_particle_stress(const double          dt,
+                                               const NodalVector    &velocities,
+                                               const FieldSelection &only)
   {
     dealii::TimerOutput::Scope t(timer, "stress update");
     const auto                 r = ::mpm::update_stress(background,
                                         particle_handler,
                                         bodies,
-                                        kinematics,
+                                        velocities,
                                         dt,
                                         &volume_sums,
-                                        domain_functions.get());
+                                        domain_functions.get(),
+                                        only);
     local_error.record(r.error);
     return r.stable_time_step;
   }

@@ -72,6 +72,10 @@ namespace mpm
     state.stress_filter =
       std::make_unique<remedies::StressFilter<dim>>(state.bodies);
     state.force_pass_hooks = remedies::create_force_pass_hooks(state.bodies);
+    if (params.contact.enabled())
+      state.contact =
+        std::make_unique<contact::MultiFieldContact<dim>>(params.contact,
+                                                          state.bodies);
     if (shape_functions::family_traits(params.shape_functions.family)
           .has_domains)
       state.domain_functions =

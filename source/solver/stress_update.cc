@@ -41,7 +41,8 @@ namespace mpm
                 const NodalVector               &kinematics,
                 const double                     dt,
                 NodalVector                     *volume_scratch,
-                const shape_functions::DomainShapeFunctions<dim> *domains)
+                const shape_functions::DomainShapeFunctions<dim> *domains,
+                const FieldSelection                             &only)
   {
     using L                       = ParticleLayout<dim>;
     constexpr unsigned int     nv = shape_functions::n_q1<dim>;
@@ -66,8 +67,8 @@ namespace mpm
 
     // L_p and F_p of the step, and the cell's Q1 values N at the particle
     // (for the node average). Standard MPM takes grad N of the cell; the
-    // domain families their stencil. False for a bad particle domain and
-    // a rigid body's particle.
+    // domain families their stencil. False for a bad particle domain, a
+    // rigid body's particle and a particle not in the pass.
     shape_functions::Stencil<dim> stencil;
     auto                          kinematics_of = [&](const auto         &p,
                              const auto         &geo,
@@ -77,7 +78,7 @@ namespace mpm
                              const double       *prop,
                              Tensor<2, dim>     &grad_v,
                              Tensor<2, dim>     &F) {
-      if (any_rigid && rigid[body_of(prop)])
+      if ((any_rigid && rigid[body_of(prop)]) || only.template skips<dim>(prop))
         return false;
       if (!domains)
         {
@@ -347,7 +348,8 @@ namespace mpm
     const NodalVector &,                                               \
     double,                                                            \
     NodalVector *,                                                     \
-    const shape_functions::DomainShapeFunctions<d> *);                 \
+    const shape_functions::DomainShapeFunctions<d> *,                  \
+    const FieldSelection &);                                           \
   template std::pair<double, std::string> limiting_particle<d>(        \
     const BackgroundGrid<d> &,                                         \
     Particles::ParticleHandler<d> &,                                   \

@@ -47,7 +47,8 @@ namespace mpm
             for (auto &p : pic)
               {
                 double *prop = p.get_properties().data();
-                if (!weights.evaluate(p, false, error))
+                if (c.only.template skips<dim>(prop) ||
+                    !weights.evaluate(p, false, error))
                   continue;
                 double v_grid[dim] = {}, dv[dim] = {};
                 for (unsigned int k = 0; k < weights.size(); ++k)
@@ -119,7 +120,8 @@ namespace mpm
       Particles::ParticleHandler<dim>                  &particles,
       const NodalVector                                &kinematics,
       const double                                      dt,
-      const shape_functions::DomainShapeFunctions<dim> &domains)
+      const shape_functions::DomainShapeFunctions<dim> &domains,
+      const FieldSelection                             &only)
     {
       using K = KinematicsLayout<dim>;
       using Status =
@@ -129,6 +131,8 @@ namespace mpm
         grid, particles, [&](const auto &cell, const auto &pic) {
           for (auto &p : pic)
             {
+              if (only.template skips<dim>(p.get_properties().data()))
+                continue;
               const Status status =
                 domains.move_corners(cell->active_cell_index(),
                                      p.get_reference_location(),
@@ -150,7 +154,8 @@ namespace mpm
     Particles::ParticleHandler<d> &,                               \
     const NodalVector &,                                           \
     double,                                                        \
-    const shape_functions::DomainShapeFunctions<d> &);
+    const shape_functions::DomainShapeFunctions<d> &,              \
+    const FieldSelection &);
     MPM_INSTANTIATE(1)
     MPM_INSTANTIATE(2)
     MPM_INSTANTIATE(3)

@@ -63,7 +63,8 @@ namespace mpm
             for (const auto &p : pic)
               {
                 const double *prop = p.get_properties().data();
-                if (!weights.evaluate(p, do_force, error))
+                if (c.only.template skips<dim>(prop) ||
+                    !weights.evaluate(p, do_force, error))
                   continue;
                 const double   m = prop[L::mass];
                 Tensor<2, dim> sigma; // -V_p sigma_p

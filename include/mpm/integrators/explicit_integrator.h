@@ -15,6 +15,11 @@ namespace mpm
    *              P2G (force) -> grid update -> G2P -> position update.
    * The step length is fixed or a CFL fraction of the stability limit
    * that the stress update measures.
+   *
+   * With a contact law each phase runs once per velocity field, on that
+   * field's particles and nodal vectors, and the fields' nodal velocities
+   * meet by the law after each phase that makes them (the contact phase,
+   * contact/multi_field_contact.h). One field is the plain step.
    */
   template <int dim>
   class ExplicitIntegrator : public TimeIntegrator<dim>
@@ -43,6 +48,12 @@ namespace mpm
     void
     compute_nodal_fields() override;
 
+    /// With contact: the nodes where fields met in the last step.
+    std::vector<std::string>
+    statistics_columns() const override;
+    std::vector<double>
+    statistics_values() const override;
+
   private:
     using TimeIntegrator<dim>::state;
 
@@ -63,9 +74,29 @@ namespace mpm
     void
     update_positions();
 
-    /// Where the transfers find the particles, grid and family weights.
+    /// The contact phase: the fields' velocities at time @p t meet by the
+    /// contact law (no-op with one field).
+    void
+    resolve_contact(const bool with_increment, const double t);
+
+    /// The velocity fields: one without contact, whose vectors are the
+    /// state's own.
+    unsigned int
+    n_fields() const;
+    NodalVector &
+    p2g(const unsigned int f);
+    NodalVector &
+    kinematics(const unsigned int f);
+    NodalVector &
+    remap(const unsigned int f);
+
+    /// Where the transfers find the particles, grid and family weights,
+    /// for the particles of field @p f.
     transfer::TransferContext<dim>
-    transfer_context() const;
+    transfer_context(const unsigned int f) const;
+
+    /// Nodes where the fields met in the last step (all ranks).
+    double contact_nodes = 0;
     /// The shape-function family's behaviour.
     const shape_functions::FamilyTraits &
     family() const;

@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
+#include <mpm/contact/contact_parameters.h>
 #include <mpm/grid/grid_parameters.h>
 #include <mpm/integrators/implicit_parameters.h>
 #include <mpm/materials/material.h>
@@ -120,6 +121,8 @@ namespace mpm
       /// the directions the body imposes on the nodes it shares with
       /// others (bit d: direction d)
       unsigned int prescribed_directions = 0;
+      /// the velocity field of the body (subsection Contact); -1: its own
+      int contact_field = -1;
 
       /// The locking remedies of this body, with their settings
       /// (subsection Locking remedies; remedies/registry.h).
@@ -201,6 +204,7 @@ namespace mpm
       Checkpointing          checkpointing;
       LoadBalancing          load_balancing;
       ImplicitSolver         implicit;
+      Contact                contact;
       std::string            benchmark = "none";
       std::map<std::string, double> constants;
       /// Memory the case may use [GB]; 0: what the machines have

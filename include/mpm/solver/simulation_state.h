@@ -5,10 +5,12 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <mpm/contact/multi_field_contact.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/grid/load_balancer.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/particles/body.h>
+#include <mpm/particles/field_selection.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/remedies/force_pass_hook.h>
 #include <mpm/remedies/stress_filter.h>
@@ -56,7 +58,17 @@ namespace mpm
     /// kinematics over @p dt (timed; errors recorded). Returns the stable
     /// time step of the new state.
     double
-    update_particle_stress(const double dt);
+    update_particle_stress(const double dt)
+    {
+      return update_particle_stress(dt, kinematics, FieldSelection());
+    }
+
+    /// The same from the velocities of @p velocities (KinematicsLayout),
+    /// for the particles @p only selects (contact: one velocity field).
+    double
+    update_particle_stress(const double          dt,
+                           const NodalVector    &velocities,
+                           const FieldSelection &only);
 
     const Parameters::AllParameters<dim> &params;
     const MPI_Comm                        comm;
@@ -75,6 +87,8 @@ namespace mpm
     /// The remedies around the P2G passes with forces (the 1D convection
     /// correction).
     std::vector<std::unique_ptr<remedies::ForcePassHook<dim>>> force_pass_hooks;
+    /// The velocity fields of contact (null: one field, no contact law).
+    std::unique_ptr<contact::MultiFieldContact<dim>> contact;
     /// Null unless load balancing is on.
     std::unique_ptr<LoadBalancer<dim>> balancer;
 

@@ -4,6 +4,7 @@
 
 #include <mpm/grid/background_grid.h>
 #include <mpm/particles/body.h>
+#include <mpm/particles/field_selection.h>
 
 #include <string>
 #include <vector>
@@ -38,6 +39,8 @@ namespace mpm
    *
    * With @p domains (GIMP, CPDI) L_p comes from the family's gradients;
    * the node average keeps the Q1 functions of the particle's cell.
+   * Only the particles @p only selects are updated (contact: one velocity
+   * field per pass, @p kinematics and @p volume_scratch that field's).
    */
   template <int dim>
   StressUpdateResult
@@ -48,7 +51,8 @@ namespace mpm
     const NodalVector                                &kinematics,
     const double                                      dt,
     NodalVector                                      *volume_scratch = nullptr,
-    const shape_functions::DomainShapeFunctions<dim> *domains        = nullptr);
+    const shape_functions::DomainShapeFunctions<dim> *domains        = nullptr,
+    const FieldSelection                             &only           = {});
 
   /// The stability limit of the current state (no update).
   template <int dim>

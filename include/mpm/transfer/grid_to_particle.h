@@ -94,7 +94,8 @@ namespace mpm
     /**
      * CPDI2's domain update, with the position update at the end of the
      * step: every corner moves by dt times the grid velocity interpolated
-     * at it (the particle centres move in G2P).
+     * at it (the particle centres move in G2P). Only the particles
+     * @p only selects.
      */
     template <int dim>
     std::string
@@ -103,6 +104,7 @@ namespace mpm
       dealii::Particles::ParticleHandler<dim>          &particles,
       const NodalVector                                &kinematics,
       const double                                      dt,
-      const shape_functions::DomainShapeFunctions<dim> &domains);
+      const shape_functions::DomainShapeFunctions<dim> &domains,
+      const FieldSelection                             &only = {});
   } // namespace transfer
 } // namespace mpm

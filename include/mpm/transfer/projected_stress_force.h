@@ -31,6 +31,7 @@ namespace mpm
     public:
       explicit ProjectedStressForce(const P2GContext<dim> &c)
         : CellProjection<dim>(c)
+        , only(c.only)
         , present(c.bodies.size())
         , by_field(c.bodies.size(), 0)
       {}
@@ -44,7 +45,11 @@ namespace mpm
         auto &filter = this->filter;
         std::fill(present.begin(), present.end(), 0);
         for (const auto &p : pic)
-          present[static_cast<unsigned int>(p.get_properties()[L::body])] = 1;
+          {
+            const double *prop = p.get_properties().data();
+            if (!only.template skips<dim>(prop))
+              present[static_cast<unsigned int>(prop[L::body])] = 1;
+          }
         const dealii::Tensor<2, dim> J0 = this->centre_jacobian(cell);
         double                       beta[remedies::StressFilter<dim>::n_beta];
         for (unsigned int b = 0; b < present.size(); ++b)
@@ -68,7 +73,9 @@ namespace mpm
       }
 
     private:
-      std::vector<char> present;
+      /// the pass's particles (the other fields' bodies are not projected)
+      const FieldSelection only;
+      std::vector<char>    present;
       /// Per body, whether this cell's projected field gives its stresses.
       std::vector<char> by_field;
     };

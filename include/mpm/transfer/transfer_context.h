@@ -3,6 +3,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/grid/background_grid.h>
+#include <mpm/particles/field_selection.h>
 
 namespace mpm::shape_functions
 {
@@ -26,6 +27,8 @@ namespace mpm
       const shape_functions::DomainShapeFunctions<dim> *domains;
       /// APIC's slot of C_p in the particle properties (0: no APIC).
       unsigned int affine;
+      /// The particles of the pass (contact: one velocity field's).
+      FieldSelection only = {};
     };
   } // namespace transfer
 } // namespace mpm

@@ -1,0 +1,139 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+
+#include <mpm/contact/contact_parameters.h>
+
+#include <cmath>
+
+namespace mpm
+{
+  namespace contact
+  {
+    /// One velocity field's values at a node.
+    template <int dim>
+    struct FieldAtNode
+    {
+      double                 mass = 0;
+      dealii::Tensor<1, dim> velocity;
+      /// sum_p m_p grad N_ip over the field's particles: at a node on the
+      /// field's boundary it points out of the field's bodies (grad N_i
+      /// points towards node i)
+      dealii::Tensor<1, dim> mass_gradient;
+      /// the contact normal, out of the field's bodies (unit, or zero
+      /// where no direction is known)
+      dealii::Tensor<1, dim> normal;
+      bool                   rigid = false;
+    };
+
+    /**
+     * The contact normals of the @p n fields at a node
+     * (doc/theory/contact.md): two fields share one direction, along the
+     * difference of their mass gradients, with opposite signs (the
+     * exchanged momentum is then equal and opposite); a field meeting a
+     * rigid one takes the rigid body's surface normal, reversed (the
+     * deformable field's own gradient would tilt it at the field's
+     * corners, where a sliding body would catch on a flat surface); with
+     * three or more fields each takes its own gradient. Zero where the
+     * gradients vanish.
+     */
+    template <int dim>
+    inline void
+    set_contact_normals(FieldAtNode<dim> *fields, const unsigned int n)
+    {
+      auto unit = [](const dealii::Tensor<1, dim> &g) {
+        const double norm = g.norm();
+        return norm > 0 ? dealii::Tensor<1, dim>(g / norm) :
+                          dealii::Tensor<1, dim>();
+      };
+      int rigid = -1;
+      for (unsigned int f = 0; f < n && rigid < 0; ++f)
+        if (fields[f].rigid)
+          rigid = static_cast<int>(f);
+      for (unsigned int f = 0; f < n; ++f)
+        {
+          const dealii::Tensor<1, dim> &g = fields[f].mass_gradient;
+          if (rigid >= 0)
+            fields[f].normal = unit(-fields[rigid].mass_gradient);
+          else if (n == 2)
+            fields[f].normal = unit(g - fields[1 - f].mass_gradient);
+          else
+            fields[f].normal = unit(g);
+        }
+    }
+
+    /**
+     * Correct the velocities of the @p n >= 2 fields at a node by the
+     * contact law (Bardenhagen et al. 2000; doc/theory/contact.md). The
+     * reference velocity is the centre-of-mass velocity, or a rigid
+     * field's. A field approaches when (v_f - v_ref) . n_f > 0; then its
+     * normal relative velocity is removed, and its tangential one by
+     * Coulomb's friction as far as mu times the normal correction goes
+     * (stick beyond). No separation sets every field to the reference
+     * velocity. Without a rigid field the total momentum is kept (exactly
+     * with two fields, by a common shift with more). Returns whether any
+     * field was corrected.
+     */
+    template <int dim>
+    inline bool
+    resolve_contact(const Parameters::Contact &law,
+                    FieldAtNode<dim>          *fields,
+                    const unsigned int         n)
+    {
+      using Law = Parameters::Contact::Law;
+      dealii::Tensor<1, dim> v_ref;
+      double                 mass  = 0;
+      int                    rigid = -1;
+      for (unsigned int f = 0; f < n; ++f)
+        {
+          if (fields[f].rigid && rigid < 0)
+            rigid = static_cast<int>(f);
+          v_ref += fields[f].mass * fields[f].velocity;
+          mass += fields[f].mass;
+        }
+      if (rigid >= 0)
+        v_ref = fields[rigid].velocity;
+      else
+        v_ref /= mass;
+
+      bool                   active = false;
+      dealii::Tensor<1, dim> momentum_change;
+      for (unsigned int f = 0; f < n; ++f)
+        {
+          FieldAtNode<dim> &field = fields[f];
+          if (field.rigid)
+            continue;
+          const dealii::Tensor<1, dim> relative = field.velocity - v_ref;
+          dealii::Tensor<1, dim>       change;
+          if (law.law == Law::no_separation)
+            change = -relative;
+          else
+            {
+              const double approach = relative * field.normal;
+              if (!(approach > 0))
+                continue;
+              const dealii::Tensor<1, dim> tangential =
+                relative - approach * field.normal;
+              const double slip = tangential.norm();
+              if (law.law == Law::coulomb && slip <= law.friction * approach)
+                change = -relative; // stick
+              else
+                {
+                  change = -approach * field.normal;
+                  if (law.law == Law::coulomb && slip > 0)
+                    change -= (law.friction * approach / slip) * tangential;
+                }
+            }
+          field.velocity += change;
+          momentum_change += field.mass * change;
+          active = true;
+        }
+      // Two fields exchange equal and opposite momenta by construction;
+      // more fields at a node are shifted together to keep the sum.
+      if (rigid < 0 && n > 2 && active)
+        for (unsigned int f = 0; f < n; ++f)
+          fields[f].velocity -= momentum_change / mass;
+      return active;
+    }
+  } // namespace contact
+} // namespace mpm

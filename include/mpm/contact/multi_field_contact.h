@@ -1,0 +1,140 @@
+#pragma once
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <mpm/contact/contact_law.h>
+#include <mpm/contact/contact_parameters.h>
+#include <mpm/grid/background_grid.h>
+#include <mpm/parameters/parameters.h>
+#include <mpm/particles/body.h>
+#include <mpm/particles/field_selection.h>
+
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+  namespace contact
+  {
+    /**
+     * Multi-velocity-field contact (doc/theory/contact.md): each velocity
+     * field (a body, or the bodies that share a Contact field number)
+     * has nodal vectors of its own, filled by the transfers run once per
+     * field (FieldSelection), and where two fields share a node their
+     * velocities are corrected by the contact law (resolve_contact()).
+     * A rigid body (Prescribed velocity) is a field whose nodal velocity
+     * is its prescribed one.
+     *
+     * No nodal value lives from one step to the next, so checkpoints need
+     * nothing from here.
+     */
+    template <int dim>
+    class MultiFieldContact
+    {
+    public:
+      MultiFieldContact(const Parameters::Contact    &law,
+                        const std::vector<Body<dim>> &bodies);
+
+      unsigned int
+      n_fields() const
+      {
+        return n;
+      }
+
+      /// The particles of field @p f.
+      FieldSelection
+      selection(const unsigned int f) const
+      {
+        return {&field_of_body, f};
+      }
+
+      /// The field's vectors for the current partition.
+      void
+      initialize_vectors(const BackgroundGrid<dim> &grid);
+
+      /// Field @p f's P2G sums (P2GLayout), velocities (KinematicsLayout)
+      /// and MUSL's re-mapped momentum (dim per node).
+      NodalVector &
+      p2g(const unsigned int f)
+      {
+        return fields[f].p2g;
+      }
+      NodalVector &
+      kinematics(const unsigned int f)
+      {
+        return fields[f].kinematics;
+      }
+      NodalVector &
+      remap(const unsigned int f)
+      {
+        return fields[f].remap;
+      }
+
+      /**
+       * Each field's nodal mass gradient sum_p m_p grad N_ip, with the Q1
+       * functions of the particle's cell, for the contact normals of the
+       * step (at the positions of its start).
+       */
+      void
+      compute_mass_gradients(
+        const BackgroundGrid<dim>               &grid,
+        dealii::Particles::ParticleHandler<dim> &particles);
+
+      /**
+       * Apply the contact law to the fields' velocities at time @p t, on
+       * owned nodes; ghosts updated. A rigid field's velocity is its
+       * prescribed one at @p t. @p with_increment: the velocities are the
+       * step's new ones, and their increments (FLIP's) change with them;
+       * a rigid field's increment is its prescribed change since
+       * @p t_old. Fields lighter than @p min_mass at a node do not take
+       * part. Returns an empty string or the first non-finite velocity.
+       */
+      std::string
+      resolve(const BackgroundGrid<dim>    &grid,
+              const std::vector<Body<dim>> &bodies,
+              const double                  min_mass,
+              const bool                    with_increment,
+              const double                  t,
+              const double                  t_old);
+
+      /// The nodes (owned by this rank) where the last resolve with
+      /// increments corrected a field.
+      unsigned long
+      n_contact_nodes() const
+      {
+        return contact_nodes;
+      }
+
+      /// The sum of the fields into @p p2g (owned nodes) and their
+      /// centre-of-mass velocity and increment into @p kinematics (ghosts
+      /// updated): what one field would show in the output.
+      void
+      combine(const BackgroundGrid<dim> &grid,
+              NodalVector               &p2g,
+              NodalVector               &kinematics);
+
+    private:
+      struct Field
+      {
+        int         rigid_body = -1; ///< the rigid body, or -1
+        NodalVector p2g, kinematics, remap, mass_gradient;
+      };
+      Parameters::Contact        law;
+      std::vector<unsigned char> field_of_body;
+      unsigned int               n = 0;
+      std::vector<Field>         fields;
+      unsigned long              contact_nodes = 0;
+    };
+
+    /**
+     * The contact settings of @p params checked against the bodies and
+     * the integrator (InputError naming the entry): a law with bodies in
+     * fewer than two fields, fields without a law, a friction coefficient
+     * that the law does not use, a rigid body sharing a field, the
+     * implicit integrators, the 1D convection correction.
+     */
+    template <int dim>
+    void
+    check_parameters(const Parameters::AllParameters<dim> &params);
+  } // namespace contact
+} // namespace mpm

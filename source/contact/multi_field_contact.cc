@@ -1,0 +1,340 @@
+#include <deal.II/base/mpi.h>
+
+#include <mpm/contact/multi_field_contact.h>
+#include <mpm/grid/nodal_layout.h>
+#include <mpm/particles/cell_loop.h>
+#include <mpm/remedies/convection_correction_remedy.h>
+#include <mpm/utilities/input_error.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace mpm
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// Each body's field, numbered 0, 1, ... in the order bodies name
+      /// them; Contact field = -1 is a field of the body's own.
+      template <int dim>
+      std::vector<unsigned char>
+      number_fields(const std::vector<Parameters::Body<dim>> &bodies)
+      {
+        std::map<int, unsigned char> number;
+        std::vector<unsigned char>   field(bodies.size());
+        unsigned char                next = 0;
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          {
+            const int given = bodies[b].contact_field;
+            if (given < 0)
+              field[b] = next++;
+            else
+              {
+                const auto found = number.find(given);
+                field[b]         = found != number.end() ? found->second :
+                                                           (number[given] = next++);
+              }
+          }
+        return field;
+      }
+
+      template <int dim>
+      std::vector<Parameters::Body<dim>>
+      body_parameters(const std::vector<Body<dim>> &bodies)
+      {
+        std::vector<Parameters::Body<dim>> prm;
+        for (const auto &body : bodies)
+          prm.push_back(body.prm);
+        return prm;
+      }
+    } // namespace
+
+    template <int dim>
+    MultiFieldContact<dim>::MultiFieldContact(
+      const Parameters::Contact    &law,
+      const std::vector<Body<dim>> &bodies)
+      : law(law)
+      , field_of_body(number_fields(body_parameters(bodies)))
+    {
+      for (const unsigned char f : field_of_body)
+        n = std::max(n, f + 1u);
+      fields.resize(n);
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (bodies[b].is_rigid())
+          fields[field_of_body[b]].rigid_body = static_cast<int>(b);
+    }
+
+    template <int dim>
+    void
+    MultiFieldContact<dim>::initialize_vectors(const BackgroundGrid<dim> &grid)
+    {
+      for (auto &field : fields)
+        {
+          grid.initialize_vector(field.p2g, P2GLayout<dim>::n_components);
+          grid.initialize_vector(field.kinematics,
+                                 KinematicsLayout<dim>::n_components);
+          grid.initialize_vector(field.remap, dim);
+          grid.initialize_vector(field.mass_gradient, dim);
+        }
+    }
+
+    template <int dim>
+    void
+    MultiFieldContact<dim>::compute_mass_gradients(
+      const BackgroundGrid<dim>       &grid,
+      Particles::ParticleHandler<dim> &particles)
+    {
+      using L                   = ParticleLayout<dim>;
+      constexpr unsigned int nv = shape_functions::n_q1<dim>;
+      std::vector<double *>  out(n);
+      for (unsigned int f = 0; f < n; ++f)
+        {
+          fields[f].mass_gradient = 0.;
+          out[f]                  = fields[f].mass_gradient.begin();
+        }
+      Tensor<1, dim> G[nv];
+      for_each_cell_with_particles(
+        grid, particles, [&](const auto &cell, const auto &pic) {
+          const auto         &geo   = grid.geometry(cell);
+          const unsigned int *nodes = grid.nodes(cell);
+          for (const auto &p : pic)
+            {
+              const double *prop = p.get_properties().data();
+              double *const g =
+                out[field_of_body[static_cast<unsigned int>(prop[L::body])]];
+              geo.gradients(p.get_reference_location(), G);
+              for (unsigned int v = 0; v < nv; ++v)
+                for (unsigned int d = 0; d < dim; ++d)
+                  g[nodes[v] * dim + d] += prop[L::mass] * G[v][d];
+            }
+        });
+      for (auto &field : fields)
+        field.mass_gradient.compress(VectorOperation::add);
+    }
+
+    template <int dim>
+    std::string
+    MultiFieldContact<dim>::resolve(const BackgroundGrid<dim>    &grid,
+                                    const std::vector<Body<dim>> &bodies,
+                                    const double                  min_mass,
+                                    const bool   with_increment,
+                                    const double t,
+                                    const double t_old)
+    {
+      using P = P2GLayout<dim>;
+      using K = KinematicsLayout<dim>;
+      // the rigid fields' velocities at t, and their change since t_old
+      std::vector<Tensor<1, dim>> rigid_velocity(n), rigid_change(n);
+      for (unsigned int f = 0; f < n; ++f)
+        if (fields[f].rigid_body >= 0)
+          {
+            const auto &motion =
+              bodies[fields[f].rigid_body].prescribed_velocity;
+            double now[dim], before[dim];
+            motion.value(Point<dim>(), t, now);
+            motion.value(Point<dim>(), t_old, before);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                rigid_velocity[f][d] = now[d];
+                rigid_change[f][d]   = now[d] - before[d];
+              }
+          }
+
+      std::string                   error;
+      std::vector<FieldAtNode<dim>> at_node(n);
+      std::vector<unsigned int>     present(n);
+      unsigned long                 active = 0;
+      for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
+        {
+          unsigned int count = 0;
+          for (unsigned int f = 0; f < n; ++f)
+            {
+              Field       &field = fields[f];
+              const double m =
+                field.p2g.local_element(i * P::n_components + P::mass);
+              if (!(m > min_mass))
+                continue;
+              double *k = field.kinematics.begin() + i * K::n_components;
+              if (field.rigid_body >= 0)
+                {
+                  double v[dim], dv[dim];
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      v[d]  = rigid_velocity[f][d];
+                      dv[d] = rigid_change[f][d];
+                    }
+                  grid.constrain(i, v);
+                  grid.constrain(i, dv);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      k[K::velocity + d] = v[d];
+                      if (with_increment)
+                        k[K::increment + d] = dv[d];
+                    }
+                }
+              FieldAtNode<dim> &a = at_node[count];
+              a.mass              = m;
+              a.rigid             = field.rigid_body >= 0;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  a.velocity[d] = k[K::velocity + d];
+                  a.mass_gradient[d] =
+                    field.mass_gradient.local_element(i * dim + d);
+                }
+              present[count++] = f;
+            }
+          if (count < 2)
+            continue;
+          std::vector<Tensor<1, dim>> before(count);
+          for (unsigned int a = 0; a < count; ++a)
+            before[a] = at_node[a].velocity;
+          set_contact_normals(at_node.data(), count);
+          if (!resolve_contact(law, at_node.data(), count))
+            continue;
+          ++active;
+          for (unsigned int a = 0; a < count; ++a)
+            {
+              if (at_node[a].rigid)
+                continue;
+              double *k =
+                fields[present[a]].kinematics.begin() + i * K::n_components;
+              double v[dim], change[dim];
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  v[d]      = at_node[a].velocity[d];
+                  change[d] = v[d] - before[a][d];
+                }
+              // a wall's constraint wins over the contact
+              grid.constrain(i, v);
+              grid.constrain(i, change);
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  k[K::velocity + d] = v[d];
+                  if (with_increment)
+                    k[K::increment + d] += change[d];
+                  if (!std::isfinite(v[d]) && error.empty())
+                    {
+                      std::ostringstream s;
+                      s << "non-finite nodal velocity after contact at the "
+                           "grid node at ("
+                        << grid.node_position(i) << ")";
+                      error = s.str();
+                    }
+                }
+            }
+        }
+      if (with_increment)
+        contact_nodes = active;
+      for (auto &field : fields)
+        field.kinematics.update_ghost_values();
+      return error;
+    }
+
+    template <int dim>
+    void
+    MultiFieldContact<dim>::combine(const BackgroundGrid<dim> &grid,
+                                    NodalVector               &p2g,
+                                    NodalVector               &kinematics)
+    {
+      using P = P2GLayout<dim>;
+      using K = KinematicsLayout<dim>;
+      for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
+        {
+          double *sum = p2g.begin() + i * P::n_components;
+          double *cm  = kinematics.begin() + i * K::n_components;
+          for (unsigned int c = 0; c < P::n_components; ++c)
+            sum[c] = 0;
+          for (unsigned int c = 0; c < K::n_components; ++c)
+            cm[c] = 0;
+          for (const auto &field : fields)
+            {
+              const double *s = field.p2g.begin() + i * P::n_components;
+              const double *k = field.kinematics.begin() + i * K::n_components;
+              for (unsigned int c = 0; c < P::n_components; ++c)
+                sum[c] += s[c];
+              for (unsigned int c = 0; c < K::n_components; ++c)
+                cm[c] += s[P::mass] * k[c];
+            }
+          if (sum[P::mass] > 0)
+            for (unsigned int c = 0; c < K::n_components; ++c)
+              cm[c] /= sum[P::mass];
+        }
+      kinematics.update_ghost_values();
+    }
+
+    template <int dim>
+    void
+    check_parameters(const Parameters::AllParameters<dim> &params)
+    {
+      using Law                 = Parameters::Contact::Law;
+      const auto       &contact = params.contact;
+      const auto        field   = number_fields(params.bodies);
+      const std::string law = "Contact/Contact law = " + law_name(contact.law);
+      if (!contact.enabled())
+        {
+          for (unsigned int b = 0; b < params.bodies.size(); ++b)
+            if (params.bodies[b].contact_field >= 0)
+              throw InputError(
+                "Bodies/" + Parameters::body_section(b) + "/Contact field = " +
+                std::to_string(params.bodies[b].contact_field) +
+                " has no effect with Contact/Contact law = none: choose a "
+                "law, or leave the entry at -1");
+          return;
+        }
+      if (contact.friction > 0 && contact.law != Law::coulomb)
+        {
+          std::ostringstream s;
+          s << "Contact/Friction coefficient = " << contact.friction
+            << " is used by Contact law = Coulomb only, not by " << law;
+          throw InputError(s.str());
+        }
+      if (params.time.integrator !=
+          Parameters::TimeStepping::Integrator::explicit_dynamics)
+        throw InputError(law +
+                         ": contact is built for Time stepping/Integrator = "
+                         "explicit only; the implicit integrators would "
+                         "need its linearization");
+      unsigned int n = 0;
+      for (const unsigned char f : field)
+        n = std::max(n, f + 1u);
+      if (n < 2)
+        throw InputError(
+          law + " needs bodies in at least two velocity fields, but every "
+                "body is in one field (Bodies/Body i/Contact field): contact "
+                "acts between fields, never within one");
+      for (unsigned int b = 0; b < params.bodies.size(); ++b)
+        {
+          const auto &body = params.bodies[b];
+          if (body.locking_remedies
+                .template find<remedies::ConvectionCorrectionSettings>())
+            throw InputError(
+              "Bodies/" + Parameters::body_section(b) +
+              "/Locking remedies/Stress filter = convection correction "
+              "cannot be combined with " +
+              law + ": its nodal forces are not split by velocity field");
+          if (body.prescribed_velocity.empty())
+            continue;
+          for (unsigned int o = 0; o < params.bodies.size(); ++o)
+            if (o != b && field[o] == field[b])
+              throw InputError(
+                "Bodies/" + Parameters::body_section(b) +
+                " is rigid (Prescribed velocity) and shares its Contact field "
+                "with Bodies/" +
+                Parameters::body_section(o) +
+                ": a rigid body needs a field of its own");
+        }
+    }
+
+#define MPM_INSTANTIATE(d)             \
+  template class MultiFieldContact<d>; \
+  template void check_parameters<d>(const Parameters::AllParameters<d> &);
+    MPM_INSTANTIATE(1)
+    MPM_INSTANTIATE(2)
+    MPM_INSTANTIATE(3)
+#undef MPM_INSTANTIATE
+  } // namespace contact
+} // namespace mpm
