@@ -80,6 +80,7 @@ namespace mpm
           grid.initialize_vector(field.remap, dim);
           grid.initialize_vector(field.mass_gradient, dim);
         }
+      in_contact.clear();
     }
 
     template <int dim>
@@ -121,12 +122,13 @@ namespace mpm
     MultiFieldContact<dim>::resolve(const BackgroundGrid<dim>    &grid,
                                     const std::vector<Body<dim>> &bodies,
                                     const double                  min_mass,
-                                    const bool   with_increment,
-                                    const double t,
-                                    const double t_old)
+                                    const Phase                   phase,
+                                    const double                  t,
+                                    const double                  t_old)
     {
-      using P = P2GLayout<dim>;
-      using K = KinematicsLayout<dim>;
+      using P                   = P2GLayout<dim>;
+      using K                   = KinematicsLayout<dim>;
+      const bool with_increment = phase == Phase::grid_update;
       // the rigid fields' velocities at t, and their change since t_old
       std::vector<Tensor<1, dim>> rigid_velocity(n), rigid_change(n);
       for (unsigned int f = 0; f < n; ++f)
@@ -148,6 +150,12 @@ namespace mpm
       std::vector<FieldAtNode<dim>> at_node(n);
       std::vector<unsigned int>     present(n);
       unsigned long                 active = 0;
+      // the stress update's velocities keep contact where the motion has
+      // it (Phase)
+      const bool hold_all = phase == Phase::start_of_step;
+      const bool hold     = phase == Phase::remap;
+      if (with_increment)
+        in_contact.assign(grid.n_owned_nodes(), 0);
       for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
         {
           unsigned int count = 0;
@@ -193,9 +201,15 @@ namespace mpm
           for (unsigned int a = 0; a < count; ++a)
             before[a] = at_node[a].velocity;
           set_contact_normals(at_node.data(), count);
-          if (!resolve_contact(law, at_node.data(), count))
+          if (!resolve_contact(law,
+                               at_node.data(),
+                               count,
+                               hold_all || (hold && in_contact.size() > i &&
+                                            in_contact[i])))
             continue;
           ++active;
+          if (with_increment)
+            in_contact[i] = 1;
           for (unsigned int a = 0; a < count; ++a)
             {
               if (at_node[a].rigid)

@@ -11,6 +11,7 @@
 namespace mpm
 {
   using namespace dealii;
+  using contact::Phase;
 
   template <int dim>
   void
@@ -76,7 +77,7 @@ namespace mpm
       {
         particle_to_grid(P2GContent::mass_momentum);
         nodal_velocity_from_momentum();
-        resolve_contact(false, state.current_time);
+        resolve_contact(Phase::start_of_step, state.current_time);
         update_stress(dt);
         // cpGIMP and CPDI take their domains from F, which the stress
         // update has just changed: the force pass and G2P see the new
@@ -89,19 +90,19 @@ namespace mpm
         particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
                                        P2GContent::force);
         update_grid(dt);
-        resolve_contact(true, t_new);
+        resolve_contact(Phase::grid_update, t_new);
         grid_to_particle(dt);
       }
     else
       {
         particle_to_grid(P2GContent::mass_momentum_force);
         update_grid(dt);
-        resolve_contact(true, t_new);
+        resolve_contact(Phase::grid_update, t_new);
         grid_to_particle(dt);
         if (state.params.time.scheme == Scheme::musl)
           {
             remap_momentum();
-            resolve_contact(false, t_new);
+            resolve_contact(Phase::remap, t_new);
           }
         update_stress(dt);
       }
@@ -120,7 +121,7 @@ namespace mpm
   {
     particle_to_grid(transfer::P2GContent::mass_momentum);
     nodal_velocity_from_momentum();
-    resolve_contact(false, state.current_time);
+    resolve_contact(Phase::start_of_step, state.current_time);
     if (state.contact)
       state.contact->combine(state.background, state.p2g, state.kinematics);
   }
@@ -218,8 +219,7 @@ namespace mpm
 
   template <int dim>
   void
-  ExplicitIntegrator<dim>::resolve_contact(const bool   with_increment,
-                                           const double t)
+  ExplicitIntegrator<dim>::resolve_contact(const Phase phase, const double t)
   {
     if (!state.contact)
       return;
@@ -227,7 +227,7 @@ namespace mpm
     state.local_error.record(state.contact->resolve(state.background,
                                                     state.bodies,
                                                     state.min_nodal_mass,
-                                                    with_increment,
+                                                    phase,
                                                     t,
                                                     state.current_time));
   }

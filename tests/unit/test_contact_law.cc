@@ -2,8 +2,10 @@
 // lose their normal relative velocity, separating ones keep theirs; Coulomb
 // friction sticks below mu times the normal correction and slips by exactly
 // that much above it; no separation gives the centre-of-mass velocity; a
-// rigid field keeps its velocity and the others meet it; the momentum of
-// the fields at the node is kept to round-off, also with three fields.
+// rigid field keeps its velocity and the others meet it; held contact (for
+// the stress update's velocities) acts on separating fields too; the
+// momentum of the fields at the node is kept to round-off, also with three
+// fields.
 #define BOOST_TEST_MODULE contact_law
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK
@@ -170,5 +172,17 @@ BOOST_AUTO_TEST_CASE(three_fields_keep_momentum)
   const Tensor<1, 2> p0 = momentum(f);
   BOOST_TEST(
     mpm::contact::resolve_contact(law(Law::coulomb, 0.4), f.data(), 3));
+  BOOST_TEST((momentum(f) - p0).norm() < 1e-14);
+}
+
+BOOST_AUTO_TEST_CASE(held_contact_acts_on_separating_fields)
+{
+  // what the stress update's velocities get where the motion has contact
+  auto               f  = two_fields(vec(1, 2), vec(0, -1)); // separating
+  const Tensor<1, 2> p0 = momentum(f);
+  BOOST_TEST(
+    mpm::contact::resolve_contact(law(Law::frictionless), f.data(), 2, true));
+  BOOST_TEST(std::abs(f[0].velocity[1] - f[1].velocity[1]) < 1e-15);
+  BOOST_TEST(f[0].velocity[0] == 1.); // tangential untouched
   BOOST_TEST((momentum(f) - p0).norm() < 1e-14);
 }

@@ -71,14 +71,17 @@ namespace mpm
      * Coulomb's friction as far as mu times the normal correction goes
      * (stick beyond). No separation sets every field to the reference
      * velocity. Without a rigid field the total momentum is kept (exactly
-     * with two fields, by a common shift with more). Returns whether any
-     * field was corrected.
+     * with two fields, by a common shift with more). @p held: the node is
+     * in contact whether the fields approach or not (the normal relative
+     * velocity is removed either way). Returns whether any field was
+     * corrected.
      */
     template <int dim>
     inline bool
     resolve_contact(const Parameters::Contact &law,
                     FieldAtNode<dim>          *fields,
-                    const unsigned int         n)
+                    const unsigned int         n,
+                    const bool                 held = false)
     {
       using Law = Parameters::Contact::Law;
       dealii::Tensor<1, dim> v_ref;
@@ -109,9 +112,10 @@ namespace mpm
             change = -relative;
           else
             {
-              const double approach = relative * field.normal;
-              if (!(approach > 0))
+              const double normal_relative = relative * field.normal;
+              if (!(normal_relative > 0) && !(held && normal_relative != 0))
                 continue;
+              const double                 approach = std::abs(normal_relative);
               const dealii::Tensor<1, dim> tangential =
                 relative - approach * field.normal;
               const double slip = tangential.norm();
@@ -119,7 +123,7 @@ namespace mpm
                 change = -relative; // stick
               else
                 {
-                  change = -approach * field.normal;
+                  change = -normal_relative * field.normal;
                   if (law.law == Law::coulomb && slip > 0)
                     change -= (law.friction * approach / slip) * tangential;
                 }

@@ -17,6 +17,27 @@ namespace mpm
   namespace contact
   {
     /**
+     * The phases after which the fields' velocities meet. The stress
+     * update must see the velocities the particles move with, or an
+     * elastic impact gains energy (doc/theory/contact.md, "Energy"): so
+     * the phases whose velocities only the stress update uses keep
+     * contact where the fields may not approach any more.
+     */
+    enum class Phase
+    {
+      /// the new velocities and their increments (FLIP's) of the grid
+      /// update: the law acts where the fields approach
+      grid_update,
+      /// USF: the velocities of the first P2G pass, for the stress
+      /// update: the law acts at every node the fields share
+      start_of_step,
+      /// MUSL: the re-mapped velocities, for the stress update: the law
+      /// acts where the fields approach and where the grid update of the
+      /// step found contact
+      remap
+    };
+
+    /**
      * Multi-velocity-field contact (doc/theory/contact.md): each velocity
      * field (a body, or the bodies that share a Contact field number)
      * has nodal vectors of its own, filled by the transfers run once per
@@ -81,24 +102,23 @@ namespace mpm
         dealii::Particles::ParticleHandler<dim> &particles);
 
       /**
-       * Apply the contact law to the fields' velocities at time @p t, on
-       * owned nodes; ghosts updated. A rigid field's velocity is its
-       * prescribed one at @p t. @p with_increment: the velocities are the
-       * step's new ones, and their increments (FLIP's) change with them;
-       * a rigid field's increment is its prescribed change since
-       * @p t_old. Fields lighter than @p min_mass at a node do not take
-       * part. Returns an empty string or the first non-finite velocity.
+       * Apply the contact law to the fields' velocities at time @p t
+       * after @p phase, on owned nodes; ghosts updated. A rigid field's
+       * velocity is its prescribed one at @p t (and in the grid update its
+       * increment the prescribed change since @p t_old). Fields lighter
+       * than @p min_mass at a node do not take part. Returns an empty
+       * string or the first non-finite velocity.
        */
       std::string
       resolve(const BackgroundGrid<dim>    &grid,
               const std::vector<Body<dim>> &bodies,
               const double                  min_mass,
-              const bool                    with_increment,
+              const Phase                   phase,
               const double                  t,
               const double                  t_old);
 
-      /// The nodes (owned by this rank) where the last resolve with
-      /// increments corrected a field.
+      /// The nodes (owned by this rank) where the last grid update's
+      /// resolve corrected a field.
       unsigned long
       n_contact_nodes() const
       {
@@ -124,6 +144,9 @@ namespace mpm
       unsigned int               n = 0;
       std::vector<Field>         fields;
       unsigned long              contact_nodes = 0;
+      /// per owned node, whether the grid update's resolve of this step
+      /// acted (read by the re-map's)
+      std::vector<char> in_contact;
     };
 
     /**

@@ -75,9 +75,9 @@ namespace mpm
     update_positions();
 
     /// The contact phase: the fields' velocities at time @p t meet by the
-    /// contact law (no-op with one field).
+    /// contact law after @p phase (no-op with one field).
     void
-    resolve_contact(const bool with_increment, const double t);
+    resolve_contact(const contact::Phase phase, const double t);
 
     /// The velocity fields: one without contact, whose vectors are the
     /// state's own.

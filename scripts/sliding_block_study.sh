@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Sliding block (prm/sliding_block.prm, doc/benchmarks/sliding_block.md):
+# an elastic block on a rigid plane inclined at theta = 30 degrees, Coulomb
+# contact, for friction coefficients from 0 to 0.7 (tan theta = 0.577) on
+# the grid of the parameter file (h = 0.05) and one twice as fine. Prints a
+# table of the slide at t = 0.5 s against 1/2 g (sin theta - mu cos theta)
+# t^2 and the error over the frictionless slide, and with FIGURE=1 writes
+# doc/figures/sliding_block.png (slide against time for some mu).
+# Usage: scripts/sliding_block_study.sh [mu values...]   (MPM=..., RANKS=n)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mpm=${MPM:-$root/build/mpm}
+ranks=${RANKS:-1}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "| mu | h | slide [m] | exact [m] | (slide - exact) / frictionless slide | steps | wall [s] |"
+echo "|---|---|---|---|---|---|---|"
+for mu in ${@:-0 0.1 0.2 0.3 0.4 0.5 0.55 0.6 0.7}; do
+  for refine in 1 2; do
+    h=$(python3 -c "print(0.05/$refine)")
+    cat > "$work/case.prm" <<PRM
+include $root/prm/sliding_block.prm
+set Constants = theta=30, mu=$mu, g=9.81, E=1e7, nu=0.3, rho=1000, top=0.5
+subsection Grid
+  set Subdivisions = $((40 * refine)), $((15 * refine))
+end
+subsection Output
+  set Directory = $work/out
+  set Interval = 0.025
+  set Write vtu = false
+end
+subsection Bodies
+  subsection Body 0
+    set Subdivisions = $((10 * refine)), $((5 * refine))
+  end
+  subsection Body 1
+    set Subdivisions = $((40 * refine)), $((5 * refine))
+  end
+end
+PRM
+    rm -rf "$work/out"
+    start=$(date +%s.%N)
+    mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
+    wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
+    cp "$work/out/statistics.txt" "$work/stats_${mu}_${refine}.txt"
+    python3 - "$work/out/statistics.txt" "$mu" "$h" "$wall" <<'PY'
+import sys
+rows = [l.split() for l in open(sys.argv[1])]
+head, last = rows[0], rows[-1]
+v = dict(zip(head, last))
+print(f"| {sys.argv[2]} | {sys.argv[3]} | {float(v['slide']):.4f} | "
+      f"{float(v['slide_exact']):.4f} | {100 * float(v['slide_error']):+.2f}% | "
+      f"{v['step']} | {sys.argv[4]} |")
+PY
+  done
+done
+if [ "${FIGURE:-0}" = 1 ]; then
+  /usr/bin/python3 "$root/scripts/plot_sliding_block.py" "$work" \
+    "$root/doc/figures/sliding_block.png"
+fi
