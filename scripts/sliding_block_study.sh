@@ -5,7 +5,9 @@
 # the grid of the parameter file (h = 0.05) and one twice as fine. Prints a
 # table of the slide at t = 0.5 s against 1/2 g (sin theta - mu cos theta)
 # t^2 and the error over the frictionless slide, and with FIGURE=1 writes
-# doc/figures/sliding_block.png (slide against time for some mu).
+# doc/figures/sliding_block.png (slide against time for some mu). Then the
+# plane drawn inclined (prm/sliding_block_rotated.prm) with its contact
+# normal given and from its mass gradient.
 # Usage: scripts/sliding_block_study.sh [mu values...]   (MPM=..., RANKS=n)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -45,6 +47,34 @@ PRM
     wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
     cp "$work/out/statistics.txt" "$work/stats_${mu}_${refine}.txt"
     python3 - "$work/out/statistics.txt" "$mu" "$h" "$wall" <<'PY'
+import sys
+rows = [l.split() for l in open(sys.argv[1])]
+head, last = rows[0], rows[-1]
+v = dict(zip(head, last))
+print(f"| {sys.argv[2]} | {sys.argv[3]} | {float(v['slide']):.4f} | "
+      f"{float(v['slide_exact']):.4f} | {100 * float(v['slide_error']):+.2f}% | "
+      f"{v['step']} | {sys.argv[4]} |")
+PY
+  done
+done
+# The plane drawn inclined across the cells, h = 0.05: with its Contact
+# normal given, and with the normal from its mass gradient.
+for mu in ${@:-0 0.3 0.5 0.7}; do
+  for normal in given "mass gradient"; do
+    cat > "$work/case.prm" <<PRM
+include $root/prm/sliding_block_rotated.prm
+set Constants = theta=30, beta=30, mu=$mu, g=9.81, E=1e7, nu=0.3, rho=1000, qx=0.373205080757, qy=1.2
+subsection Output
+  set Directory = $work/out
+  set Write vtu = false
+end
+PRM
+    [ "$normal" = given ] || printf 'subsection Bodies\n  subsection Body 1\n    set Contact normal =\n  end\nend\n' >> "$work/case.prm"
+    rm -rf "$work/out"
+    start=$(date +%s.%N)
+    mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
+    wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
+    python3 - "$work/out/statistics.txt" "$mu" "0.05, inclined plane, normal $normal" "$wall" <<'PY'
 import sys
 rows = [l.split() for l in open(sys.argv[1])]
 head, last = rows[0], rows[-1]

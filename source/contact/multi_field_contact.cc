@@ -65,7 +65,14 @@ namespace mpm
       fields.resize(n);
       for (unsigned int b = 0; b < bodies.size(); ++b)
         if (bodies[b].is_rigid())
-          fields[field_of_body[b]].rigid_body = static_cast<int>(b);
+          {
+            Field &field       = fields[field_of_body[b]];
+            field.rigid_body   = static_cast<int>(b);
+            const auto &n      = bodies[b].prm.contact_normal;
+            field.given_normal = !n.empty();
+            for (unsigned int d = 0; d < n.size(); ++d)
+              field.normal[d] = n[d];
+          }
     }
 
     template <int dim>
@@ -193,6 +200,9 @@ namespace mpm
                   a.mass_gradient[d] =
                     field.mass_gradient.local_element(i * dim + d);
                 }
+              // a flat obstacle's own normal: its mass gradient's direction
+              if (field.given_normal)
+                a.mass_gradient = field.normal;
               present[count++] = f;
             }
           if (count < 2)
@@ -291,6 +301,11 @@ namespace mpm
       if (!contact.enabled())
         {
           for (unsigned int b = 0; b < params.bodies.size(); ++b)
+            if (!params.bodies[b].contact_normal.empty())
+              throw InputError("Bodies/" + Parameters::body_section(b) +
+                               "/Contact normal has no effect with "
+                               "Contact/Contact law = none");
+          for (unsigned int b = 0; b < params.bodies.size(); ++b)
             if (params.bodies[b].contact_field >= 0)
               throw InputError(
                 "Bodies/" + Parameters::body_section(b) + "/Contact field = " +
@@ -330,6 +345,10 @@ namespace mpm
               "/Locking remedies/Stress filter = convection correction "
               "cannot be combined with " +
               law + ": its nodal forces are not split by velocity field");
+          if (!body.contact_normal.empty() && body.prescribed_velocity.empty())
+            throw InputError("Bodies/" + Parameters::body_section(b) +
+                             "/Contact normal is for rigid bodies (Prescribed "
+                             "velocity) only");
           if (body.prescribed_velocity.empty())
             continue;
           for (unsigned int o = 0; o < params.bodies.size(); ++o)

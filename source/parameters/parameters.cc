@@ -11,6 +11,7 @@
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/numbers.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -442,6 +443,16 @@ namespace mpm
         "none: bodies with the same number share a field (and stick where "
         "they meet), bodies of different fields meet by the contact law. "
         "-1: a field of the body's own.");
+      prm.declare_entry(
+        "Contact normal",
+        "",
+        Patterns::Anything(),
+        "A rigid body's outward surface normal where other fields meet it "
+        "(dim numbers or expressions of the Constants, separated by ';'; "
+        "normalized), for a flat obstacle that is not aligned with the "
+        "grid: the normal from the body's mass gradient follows the cells "
+        "its surface crosses, and a body sliding on it catches on the "
+        "steps. Empty: the mass gradient's normal.");
       prm.enter_subsection("Material");
       materials::declare_material_parameters(prm);
       prm.leave_subsection();
@@ -475,7 +486,21 @@ namespace mpm
       traction_boundary_ids   = parse_id_list(prm.get("Traction boundary ids"));
       prescribed_velocity     = prm.get("Prescribed velocity");
       contact_field           = prm.get_integer("Contact field");
-      prescribed_directions   = 0;
+      contact_normal.clear();
+      if (!prm.get("Contact normal").empty())
+        {
+          contact_normal = get_numbers(prm, "Contact normal", dim);
+          double norm    = 0;
+          for (const double c : contact_normal)
+            norm += c * c;
+          norm = std::sqrt(norm);
+          if (!(norm > 0))
+            throw InputError("Contact normal = " + prm.get("Contact normal") +
+                             " must not be zero");
+          for (double &c : contact_normal)
+            c /= norm;
+        }
+      prescribed_directions = 0;
       for (const auto &d :
            Utilities::split_string_list(prm.get("Prescribed directions")))
         prescribed_directions |= 1u << (d[0] - 'x');

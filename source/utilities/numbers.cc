@@ -101,4 +101,25 @@ namespace mpm
       throw InputError(entry + " = '" + text + "' is not finite");
     return value;
   }
+
+  std::vector<double>
+  get_numbers(const dealii::ParameterHandler &prm,
+              const std::string              &entry,
+              const unsigned int              n)
+  {
+    const std::string text  = prm.get(entry);
+    const auto        parts = dealii::Utilities::split_string_list(text, ';');
+    if (parts.size() != n)
+      throw InputError(entry + " = '" + text + "': expected " +
+                       std::to_string(n) + " values separated by ';'");
+    std::vector<double> values(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        if (!plain_number(parts[k], values[k]))
+          values[k] = constant_expression(entry, parts[k]);
+        if (!std::isfinite(values[k]))
+          throw InputError(entry + " = '" + text + "' is not finite");
+      }
+    return values;
+  }
 } // namespace mpm

@@ -3,7 +3,9 @@
 // the plane by the contact law. Frictionless and Coulomb with mu = 0.3 it
 // slides 1/2 g (sin theta - mu cos theta) t^2; with mu = 0.7 > tan theta it
 // stays; with the law no separation (single-field MPM's behaviour) it
-// sticks to the plane however smooth.
+// sticks to the plane however smooth. The same with the plane drawn
+// inclined across the grid's cells (prm/sliding_block_rotated.prm), its
+// contact normal given.
 #include <mpm/particles/particle_layout.h>
 
 #include "../tests.h"
@@ -15,45 +17,59 @@ main(int argc, char **argv)
   using L            = mpm::ParticleLayout<2>;
   const double theta = 30 * M_PI / 180, g = 9.81, t_end = 0.3;
   const double frictionless = 0.5 * g * std::sin(theta) * t_end * t_end;
-  for (const auto &[law, mu] :
-       std::vector<std::pair<std::string, double>>{{"frictionless", 0.},
-                                                   {"Coulomb", 0.3},
-                                                   {"Coulomb", 0.7},
-                                                   {"no separation", 0.}})
-    {
-      std::ostringstream prm;
-      prm << "include " SOURCE_DIR "/../../prm/sliding_block.prm\n"
-          << "set Constants = theta=30, mu=" << mu
-          << ", g=9.81, E=1e7, nu=0.3, rho=1000, top=0.5\n"
-          << "subsection Contact\n  set Contact law = " << law
-          << "\n  set Friction coefficient = mu\nend\n"
-          << "subsection Output\n"
-          << "  set Write vtu = false\nend\n";
-      mpm_test::Case<2> c(prm.str(), 2);
-      auto             &sim = *c.simulator;
-      while (sim.time() < t_end - 1e-12)
-        sim.do_time_step(
-          std::min(0.5 * sim.stable_time_step(), t_end - sim.time()));
-      double local[2] = {};
-      for (const auto &p : sim.particles())
-        {
-          const double *prop = p.get_properties().data();
-          if (prop[L::body] != 0)
-            continue;
-          local[0] += prop[L::mass];
-          local[1] += prop[L::mass] * (p.get_location()[0] - prop[L::X]);
-        }
-      const double m = dealii::Utilities::MPI::sum(local[0], MPI_COMM_WORLD);
-      const double slide =
-        dealii::Utilities::MPI::sum(local[1], MPI_COMM_WORLD) / m;
-      const double a =
-        std::tan(theta) > mu ? g * (std::sin(theta) - mu * std::cos(theta)) : 0;
-      const double exact = law == "no separation" ? 0 : 0.5 * a * t_end * t_end;
-      std::ostringstream tag;
-      tag << law << ", mu = " << mu << ": |slide - exact| / frictionless slide";
-      mpm_test::check(std::abs(slide - exact) < 0.02 * frictionless,
-                      tag.str(),
-                      std::abs(slide - exact) / frictionless,
-                      0.02);
-    }
+  // the plane along the grid (tilted gravity) and drawn inclined across
+  // the cells (its Contact normal given)
+  for (const std::string file : {"sliding_block", "sliding_block_rotated"})
+    for (const auto &[law, mu] :
+         std::vector<std::pair<std::string, double>>{{"frictionless", 0.},
+                                                     {"Coulomb", 0.3},
+                                                     {"Coulomb", 0.7},
+                                                     {"no separation", 0.}})
+      {
+        const bool rotated = file == "sliding_block_rotated";
+        if (rotated && law != "Coulomb")
+          continue;
+        std::ostringstream prm;
+        prm << "include " SOURCE_DIR "/../../prm/" << file << ".prm\n"
+            << "set Constants = theta=30, beta=" << (rotated ? 30 : 0)
+            << ", mu=" << mu << ", g=9.81, E=1e7, nu=0.3, rho=1000, top=0.5"
+            << (rotated ? ", qx=0.373205080757, qy=1.2" : "") << "\n"
+            << "subsection Contact\n  set Contact law = " << law
+            << "\n  set Friction coefficient = mu\nend\n"
+            << "subsection Output\n"
+            << "  set Write vtu = false\nend\n";
+        mpm_test::Case<2> c(prm.str(), 2);
+        auto             &sim  = *c.simulator;
+        const double      beta = rotated ? theta : 0.;
+        while (sim.time() < t_end - 1e-12)
+          sim.do_time_step(
+            std::min(0.5 * sim.stable_time_step(), t_end - sim.time()));
+        double local[2] = {};
+        for (const auto &p : sim.particles())
+          {
+            const double *prop = p.get_properties().data();
+            if (prop[L::body] != 0)
+              continue;
+            const auto &x = p.get_location();
+            local[0] += prop[L::mass];
+            local[1] +=
+              prop[L::mass] * ((x[0] - prop[L::X]) * std::cos(beta) -
+                               (x[1] - prop[L::X + 1]) * std::sin(beta));
+          }
+        const double m = dealii::Utilities::MPI::sum(local[0], MPI_COMM_WORLD);
+        const double slide =
+          dealii::Utilities::MPI::sum(local[1], MPI_COMM_WORLD) / m;
+        const double a = std::tan(theta) > mu ?
+                           g * (std::sin(theta) - mu * std::cos(theta)) :
+                           0;
+        const double exact =
+          law == "no separation" ? 0 : 0.5 * a * t_end * t_end;
+        std::ostringstream tag;
+        tag << (rotated ? "plane across the cells, " : "") << law
+            << ", mu = " << mu << ": |slide - exact| / frictionless slide";
+        mpm_test::check(std::abs(slide - exact) < 0.02 * frictionless,
+                        tag.str(),
+                        std::abs(slide - exact) / frictionless,
+                        0.02);
+      }
 }

@@ -44,7 +44,7 @@ namespace mpm
      * field (FieldSelection), and where two fields share a node their
      * velocities are corrected by the contact law (resolve_contact()).
      * A rigid body (Prescribed velocity) is a field whose nodal velocity
-     * is its prescribed one.
+     * is its prescribed one, and whose surface normal may be given.
      *
      * No nodal value lives from one step to the next, so checkpoints need
      * nothing from here.
@@ -136,8 +136,11 @@ namespace mpm
     private:
       struct Field
       {
-        int         rigid_body = -1; ///< the rigid body, or -1
-        NodalVector p2g, kinematics, remap, mass_gradient;
+        int rigid_body = -1; ///< the rigid body, or -1
+        /// a rigid body's Contact normal (outward), if given
+        bool                   given_normal = false;
+        dealii::Tensor<1, dim> normal;
+        NodalVector            p2g, kinematics, remap, mass_gradient;
       };
       Parameters::Contact        law;
       std::vector<unsigned char> field_of_body;

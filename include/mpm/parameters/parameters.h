@@ -123,6 +123,9 @@ namespace mpm
       unsigned int prescribed_directions = 0;
       /// the velocity field of the body (subsection Contact); -1: its own
       int contact_field = -1;
+      /// a rigid body's outward surface normal for contact (dim numbers);
+      /// empty: from the mass gradients
+      std::vector<double> contact_normal;
 
       /// The locking remedies of this body, with their settings
       /// (subsection Locking remedies; remedies/registry.h).

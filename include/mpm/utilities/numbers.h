@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace mpm
 {
@@ -46,4 +47,10 @@ namespace mpm
   /// it is neither a number nor an expression of the known constants.
   double
   get_number(const dealii::ParameterHandler &prm, const std::string &entry);
+
+  /// @p n such values separated by ';' in one entry.
+  std::vector<double>
+  get_numbers(const dealii::ParameterHandler &prm,
+              const std::string              &entry,
+              const unsigned int              n);
 } // namespace mpm
