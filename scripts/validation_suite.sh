@@ -42,6 +42,10 @@
 #   cantilever_aspect scripts/cantilever_aspect_study.sh: L/H 4 to 40,
 #                   nu 0 to 0.49, and in 3D L/H 4 to 20
 #                   (doc/benchmarks/cantilever.md)        8 + 86 min
+#   sliding_block   scripts/sliding_block_study.sh + plot, contact with
+#                   friction (doc/benchmarks/sliding_block.md)     2.5 min
+#   colliding_disks scripts/colliding_disks_study.sh + plot, contact
+#                   through an impact (doc/benchmarks/colliding_disks.md) 2 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
 # Full suite: about 3 hours. QUICK=1 (coarse grids, short runs, few
@@ -56,7 +60,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect sliding_block colliding_disks recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -193,6 +197,22 @@ part_strip_footing() {
   [ "$quick" = 1 ] && h=0.25
   FAMILIES="standard CPDI" "$root/scripts/strip_footing_study.sh" "$res/strip-footing" $h &&
     $py "$root/scripts/plot_strip_footing.py" "$res/strip-footing" "$figs/strip_footing.png"
+}
+
+part_sliding_block() {
+  if [ "$quick" = 1 ]; then
+    "$root/scripts/sliding_block_study.sh" 0.3 > "$res/sliding-block.txt"
+  else
+    FIGURE=1 "$root/scripts/sliding_block_study.sh" > "$res/sliding-block.txt"
+  fi
+}
+
+part_colliding_disks() {
+  if [ "$quick" = 1 ]; then
+    "$root/scripts/colliding_disks_study.sh" > "$res/colliding-disks.txt"
+  else
+    FIGURE=1 "$root/scripts/colliding_disks_study.sh" > "$res/colliding-disks.txt"
+  fi
 }
 
 part_column_implicit() {
