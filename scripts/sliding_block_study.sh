@@ -16,6 +16,18 @@ ranks=${RANKS:-1}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# row MU GRID WALL: the table's row of the run in $work/out
+row() {
+  python3 - "$work/out/statistics.txt" "$@" <<'PY'
+import sys
+rows = [l.split() for l in open(sys.argv[1])]
+head, last = rows[0], rows[-1]
+v = dict(zip(head, last))
+print(f"| {sys.argv[2]} | {sys.argv[3]} | {float(v['slide']):.4f} | "
+      f"{float(v['slide_exact']):.4f} | {100 * float(v['slide_error']):+.2f}% | "
+      f"{v['step']} | {sys.argv[4]} |")
+PY
+}
 echo "| mu | h | slide [m] | exact [m] | (slide - exact) / frictionless slide | steps | wall [s] |"
 echo "|---|---|---|---|---|---|---|"
 for mu in ${@:-0 0.1 0.2 0.3 0.4 0.5 0.55 0.6 0.7}; do
@@ -46,15 +58,7 @@ PRM
     mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
     wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
     cp "$work/out/statistics.txt" "$work/stats_${mu}_${refine}.txt"
-    python3 - "$work/out/statistics.txt" "$mu" "$h" "$wall" <<'PY'
-import sys
-rows = [l.split() for l in open(sys.argv[1])]
-head, last = rows[0], rows[-1]
-v = dict(zip(head, last))
-print(f"| {sys.argv[2]} | {sys.argv[3]} | {float(v['slide']):.4f} | "
-      f"{float(v['slide_exact']):.4f} | {100 * float(v['slide_error']):+.2f}% | "
-      f"{v['step']} | {sys.argv[4]} |")
-PY
+    row "$mu" "$h" "$wall"
   done
 done
 # The plane drawn inclined across the cells, h = 0.05: with its Contact
@@ -74,15 +78,7 @@ PRM
     start=$(date +%s.%N)
     mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
     wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
-    python3 - "$work/out/statistics.txt" "$mu" "0.05, inclined plane, normal $normal" "$wall" <<'PY'
-import sys
-rows = [l.split() for l in open(sys.argv[1])]
-head, last = rows[0], rows[-1]
-v = dict(zip(head, last))
-print(f"| {sys.argv[2]} | {sys.argv[3]} | {float(v['slide']):.4f} | "
-      f"{float(v['slide_exact']):.4f} | {100 * float(v['slide_error']):+.2f}% | "
-      f"{v['step']} | {sys.argv[4]} |")
-PY
+    row "$mu" "0.05, inclined plane, normal $normal" "$wall"
   done
 done
 if [ "${FIGURE:-0}" = 1 ]; then

@@ -1,4 +1,4 @@
-// Two elastic disks collide head-on (Sulsky, Chen & Schreyer 1994): with one
+// Two elastic disks collide head-on (prm/colliding_disks.prm): with one
 // velocity field, and with two that meet by each contact law (standard MPM;
 // frictionless also with CPDI). In every case the disks bounce off each
 // other and separate, and the total momentum of the two disks stays zero
@@ -68,68 +68,19 @@ main(int argc, char **argv)
       {
         if (family == "CPDI" && law != "frictionless")
           continue;
-        mpm_test::Case<2> c(
-          R"(
-set Number of bodies = 2
-subsection Grid
-  set Lower corner = 0, 0
-  set Upper corner = 1, 1
-  set Subdivisions = 20
-end
-subsection Shape functions
-  set Family = )" +
-            family +
-            R"(
-end
-subsection Time stepping
-  set Time step control = CFL
-  set CFL number = 0.4
-end
-subsection Contact
-  set Contact law = )" +
-            law + R"(
-  set Friction coefficient = )" +
-            (law == "Coulomb" ? "0.4" : "0") + R"(
-end
-subsection Bodies
-  subsection Body 0
-    set Geometry = ball
-    set Center = 0.25, 0.25
-    set Radius = 0.2
-    set Refinements = 3
-    set Particles per direction = 2
-    set Initial velocity = 0.1; 0.1
-    subsection Material
-      set Model = linear elastic
-      set Density = 1000
-      subsection Linear elastic
-        set Young's modulus = 1000
-        set Poisson's ratio = 0.3
-      end
-    end
-  end
-  subsection Body 1
-    set Geometry = ball
-    set Center = 0.75, 0.75
-    set Radius = 0.2
-    set Refinements = 3
-    set Particles per direction = 2
-    set Initial velocity = -0.1; -0.1
-    subsection Material
-      set Model = linear elastic
-      set Density = 1000
-      subsection Linear elastic
-        set Young's modulus = 1000
-        set Poisson's ratio = 0.3
-      end
-    end
-  end
-end)",
-          2);
-        auto        &sim    = *c.simulator;
-        const double mass   = sim.statistics().mass;
-        const double m_v0   = 0.5 * mass * 0.1 * std::sqrt(2.);
-        const double e_kin0 = sim.statistics().kinetic_energy;
+        std::ostringstream prm;
+        prm << "include " SOURCE_DIR "/../../prm/colliding_disks.prm\n"
+            << "subsection Shape functions\n  set Family = " << family
+            << "\nend\n"
+            << "subsection Contact\n  set Contact law = " << law
+            << "\n  set Friction coefficient = "
+            << (law == "Coulomb" ? "0.4" : "0") << "\nend\n"
+            << "subsection Output\n  set Write vtu = false\nend\n";
+        mpm_test::Case<2> c(prm.str(), 2);
+        auto             &sim    = *c.simulator;
+        const double      mass   = sim.statistics().mass;
+        const double      m_v0   = 0.5 * mass * 0.1 * std::sqrt(2.);
+        const double      e_kin0 = sim.statistics().kinetic_energy;
         // contact from about t = 1.1; the disks are apart again by t = 2.5
         double max_momentum = 0;
         while (sim.time() < 3.0)
