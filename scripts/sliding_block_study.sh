@@ -7,7 +7,8 @@
 # t^2 and the error over the frictionless slide, and with FIGURE=1 writes
 # doc/figures/sliding_block.png (slide against time for some mu). Then the
 # plane drawn inclined (prm/sliding_block_rotated.prm) with its contact
-# normal given and from its mass gradient.
+# normal given and from its mass gradient, and the rolling cylinder
+# (prm/rolling_cylinder.prm; CYLINDER_MU overrides its mu values).
 # Usage: scripts/sliding_block_study.sh [mu values...]   (MPM=..., RANKS=n)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -79,6 +80,37 @@ PRM
     mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
     wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
     row "$mu" "0.05, inclined plane, normal $normal" "$wall"
+  done
+done
+# The solid cylinder (prm/rolling_cylinder.prm): it slides below
+# mu = tan(theta)/3 = 0.192 and rolls above.
+for mu in ${CYLINDER_MU:-0 0.1 0.3 0.5}; do
+  for refine in 1 2; do
+    h=$(python3 -c "print(0.05/$refine)")
+    cat > "$work/case.prm" <<PRM
+include $root/prm/rolling_cylinder.prm
+set Constants = theta=30, mu=$mu, g=9.81, E=1e7, nu=0.3, rho=1000, cylinder=1
+subsection Grid
+  set Subdivisions = $((40 * refine)), $((15 * refine))
+end
+subsection Output
+  set Directory = $work/out
+  set Write vtu = false
+end
+subsection Bodies
+  subsection Body 0
+    set Refinements = $((2 + refine))
+  end
+  subsection Body 1
+    set Subdivisions = $((40 * refine)), $((5 * refine))
+  end
+end
+PRM
+    rm -rf "$work/out"
+    start=$(date +%s.%N)
+    mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
+    wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
+    row "$mu" "$h, cylinder" "$wall"
   done
 done
 if [ "${FIGURE:-0}" = 1 ]; then

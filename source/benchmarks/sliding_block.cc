@@ -14,7 +14,8 @@ namespace mpm
     {
       const BenchmarkDeclaration declaration{
         "sliding block",
-        "a block on a plane inclined at theta with Coulomb friction mu "
+        "a block (or a cylinder) on a plane inclined at theta with Coulomb "
+        "friction mu "
         "(contact), against the rigid block's slide 1/2 g (sin theta - mu "
         "cos theta) t^2, or rest where tan theta <= mu",
         {required_constant("theta", "inclination of the plane [degrees]"),
@@ -25,7 +26,12 @@ namespace mpm
                            "[degrees]: 0 when gravity is tilted instead, "
                            "theta when the plane is drawn inclined",
                            "0"),
-         optional_constant("block", "the body index of the block", "0")},
+         optional_constant("block", "the body index of the block", "0"),
+         optional_constant("cylinder",
+                           "1: the body is a solid cylinder, which rolls "
+                           "(1/3 g sin theta t^2) where mu >= tan(theta)/3 "
+                           "and slides otherwise",
+                           "0")},
         {"slide", "slide_exact", "slide_error"}};
 
       /**
@@ -33,7 +39,9 @@ namespace mpm
        * is the mass-weighted mean displacement x_p - X_p of its particles
        * along the downhill direction s = (cos beta, -sin beta) in the
        * plane of x and the vertical (y in 2D, z in 3D); exact:
-       * 1/2 g (sin theta - mu cos theta) t^2 if tan theta > mu, else 0.
+       * 1/2 g (sin theta - mu cos theta) t^2 if tan theta > mu, else 0;
+       * for a solid cylinder (constant cylinder = 1) 1/3 g sin theta t^2
+       * where mu >= tan(theta)/3 (rolling without slip).
        * The error is (slide - exact) over the frictionless slide
        * 1/2 g sin theta t^2, so that it is defined for a block at rest.
        */
@@ -48,6 +56,7 @@ namespace mpm
           , g(c["g"])
           , beta(c.value_or("beta", 0.) * M_PI / 180)
           , block(static_cast<unsigned int>(c.value_or("block", 0.)))
+          , cylinder(c.value_or("cylinder", 0.) != 0)
         {}
 
         std::vector<double>
@@ -68,9 +77,13 @@ namespace mpm
               local[1] += m * ((x[0] - prop[L::X]) * std::cos(beta) -
                                (x[up] - prop[L::X + up]) * std::sin(beta));
             }
-          const auto   sums         = global_sums(local, comm);
-          const double slide        = sums[0] > 0 ? sums[1] / sums[0] : 0.;
-          const double a            = std::tan(theta) > mu ?
+          const auto   sums  = global_sums(local, comm);
+          const double slide = sums[0] > 0 ? sums[1] / sums[0] : 0.;
+          // a solid cylinder rolls without slip where friction can hold
+          // its contact point: a = 2/3 g sin(theta)
+          const double a            = cylinder && mu >= std::tan(theta) / 3 ?
+                                        2. / 3 * g * std::sin(theta) :
+                                      std::tan(theta) > mu ?
                                         g * (std::sin(theta) - mu * std::cos(theta)) :
                                         0.;
           const double exact        = 0.5 * a * t * t;
@@ -85,6 +98,7 @@ namespace mpm
         static constexpr unsigned int up = dim - 1;
         double                        theta, mu, g, beta;
         unsigned int                  block;
+        bool                          cylinder;
       };
     } // namespace
 
