@@ -17,9 +17,13 @@ ranks=${RANKS:-1}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# row MU GRID WALL: the table's row of the run in $work/out
-row() {
-  python3 - "$work/out/statistics.txt" "$@" <<'PY'
+# run MU GRID: run $work/case.prm and print its row of the table
+run() {
+  rm -rf "$work/out"
+  local start=$(date +%s.%N)
+  mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
+  local wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
+  python3 - "$work/out/statistics.txt" "$1" "$2" "$wall" <<'PY'
 import sys
 rows = [l.split() for l in open(sys.argv[1])]
 head, last = rows[0], rows[-1]
@@ -54,12 +58,8 @@ subsection Bodies
   end
 end
 PRM
-    rm -rf "$work/out"
-    start=$(date +%s.%N)
-    mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
-    wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
+    run "$mu" "$h"
     cp "$work/out/statistics.txt" "$work/stats_${mu}_${refine}.txt"
-    row "$mu" "$h" "$wall"
   done
 done
 # The plane drawn inclined across the cells, h = 0.05: with its Contact
@@ -75,11 +75,7 @@ subsection Output
 end
 PRM
     [ "$normal" = given ] || printf 'subsection Bodies\n  subsection Body 1\n    set Contact normal =\n  end\nend\n' >> "$work/case.prm"
-    rm -rf "$work/out"
-    start=$(date +%s.%N)
-    mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
-    wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
-    row "$mu" "0.05, inclined plane, normal $normal" "$wall"
+    run "$mu" "0.05, inclined plane, normal $normal"
   done
 done
 # The solid cylinder (prm/rolling_cylinder.prm): it slides below
@@ -106,11 +102,7 @@ subsection Bodies
   end
 end
 PRM
-    rm -rf "$work/out"
-    start=$(date +%s.%N)
-    mpirun -np $ranks "$mpm" "$work/case.prm" > "$work/log"
-    wall=$(python3 -c "import time; print(f'{time.time() - $start:.1f}')")
-    row "$mu" "$h, cylinder" "$wall"
+    run "$mu" "$h, cylinder"
   done
 done
 if [ "${FIGURE:-0}" = 1 ]; then

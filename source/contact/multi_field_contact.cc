@@ -19,37 +19,45 @@ namespace mpm
     namespace
     {
       /// Each body's field, numbered 0, 1, ... in the order bodies name
-      /// them; Contact field = -1 is a field of the body's own.
-      template <int dim>
+      /// them, from the bodies' Contact field numbers @p given; -1 is a
+      /// field of the body's own.
       std::vector<unsigned char>
-      number_fields(const std::vector<Parameters::Body<dim>> &bodies)
+      number_fields(const std::vector<int> &given)
       {
         std::map<int, unsigned char> number;
-        std::vector<unsigned char>   field(bodies.size());
+        std::vector<unsigned char>   field(given.size());
         unsigned char                next = 0;
-        for (unsigned int b = 0; b < bodies.size(); ++b)
-          {
-            const int given = bodies[b].contact_field;
-            if (given < 0)
-              field[b] = next++;
-            else
-              {
-                const auto found = number.find(given);
-                field[b]         = found != number.end() ? found->second :
-                                                           (number[given] = next++);
-              }
-          }
+        for (unsigned int b = 0; b < given.size(); ++b)
+          if (given[b] < 0)
+            field[b] = next++;
+          else
+            {
+              const auto found = number.find(given[b]);
+              field[b]         = found != number.end() ? found->second :
+                                                         (number[given[b]] = next++);
+            }
         return field;
       }
 
+      /// The Contact field numbers of the bodies.
       template <int dim>
-      std::vector<Parameters::Body<dim>>
-      body_parameters(const std::vector<Body<dim>> &bodies)
+      std::vector<int>
+      given_fields(const std::vector<Parameters::Body<dim>> &bodies)
       {
-        std::vector<Parameters::Body<dim>> prm;
+        std::vector<int> given;
         for (const auto &body : bodies)
-          prm.push_back(body.prm);
-        return prm;
+          given.push_back(body.contact_field);
+        return given;
+      }
+
+      template <int dim>
+      std::vector<int>
+      given_fields(const std::vector<Body<dim>> &bodies)
+      {
+        std::vector<int> given;
+        for (const auto &body : bodies)
+          given.push_back(body.prm.contact_field);
+        return given;
       }
     } // namespace
 
@@ -58,7 +66,7 @@ namespace mpm
       const Parameters::Contact    &law,
       const std::vector<Body<dim>> &bodies)
       : law(law)
-      , field_of_body(number_fields(body_parameters(bodies)))
+      , field_of_body(number_fields(given_fields(bodies)))
     {
       for (const unsigned char f : field_of_body)
         n = std::max(n, f + 1u);
@@ -156,6 +164,7 @@ namespace mpm
       std::string                   error;
       std::vector<FieldAtNode<dim>> at_node(n);
       std::vector<unsigned int>     present(n);
+      std::vector<Tensor<1, dim>>   uncorrected(n);
       unsigned long                 active = 0;
       // the stress update's velocities keep contact where the motion has
       // it (Phase)
@@ -207,9 +216,8 @@ namespace mpm
             }
           if (count < 2)
             continue;
-          std::vector<Tensor<1, dim>> before(count);
           for (unsigned int a = 0; a < count; ++a)
-            before[a] = at_node[a].velocity;
+            uncorrected[a] = at_node[a].velocity;
           set_contact_normals(at_node.data(), count);
           if (!resolve_contact(law,
                                at_node.data(),
@@ -230,7 +238,7 @@ namespace mpm
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   v[d]      = at_node[a].velocity[d];
-                  change[d] = v[d] - before[a][d];
+                  change[d] = v[d] - uncorrected[a][d];
                 }
               // a wall's constraint wins over the contact
               grid.constrain(i, v);
@@ -296,22 +304,24 @@ namespace mpm
     {
       using Law                 = Parameters::Contact::Law;
       const auto       &contact = params.contact;
-      const auto        field   = number_fields(params.bodies);
+      const auto        field   = number_fields(given_fields(params.bodies));
       const std::string law = "Contact/Contact law = " + law_name(contact.law);
       if (!contact.enabled())
         {
           for (unsigned int b = 0; b < params.bodies.size(); ++b)
-            if (!params.bodies[b].contact_normal.empty())
-              throw InputError("Bodies/" + Parameters::body_section(b) +
-                               "/Contact normal has no effect with "
-                               "Contact/Contact law = none");
-          for (unsigned int b = 0; b < params.bodies.size(); ++b)
-            if (params.bodies[b].contact_field >= 0)
-              throw InputError(
-                "Bodies/" + Parameters::body_section(b) + "/Contact field = " +
-                std::to_string(params.bodies[b].contact_field) +
-                " has no effect with Contact/Contact law = none: choose a "
-                "law, or leave the entry at -1");
+            {
+              if (!params.bodies[b].contact_normal.empty())
+                throw InputError("Bodies/" + Parameters::body_section(b) +
+                                 "/Contact normal has no effect with "
+                                 "Contact/Contact law = none");
+              if (params.bodies[b].contact_field >= 0)
+                throw InputError(
+                  "Bodies/" + Parameters::body_section(b) +
+                  "/Contact field = " +
+                  std::to_string(params.bodies[b].contact_field) +
+                  " has no effect with Contact/Contact law = none: choose a "
+                  "law, or leave the entry at -1");
+            }
           return;
         }
       if (contact.friction > 0 && contact.law != Law::coulomb)

@@ -269,18 +269,13 @@ namespace mpm
   void
   ExplicitIntegrator<dim>::update_stress(const double dt)
   {
-    if (!state.contact)
-      {
-        state.stable_dt = state.update_particle_stress(dt);
-        return;
-      }
     state.stable_dt = std::numeric_limits<double>::max();
     for (unsigned int f = 0; f < n_fields(); ++f)
       state.stable_dt =
         std::min(state.stable_dt,
                  state.update_particle_stress(dt,
                                               kinematics(f),
-                                              state.contact->selection(f)));
+                                              transfer_context(f).only));
   }
 
   template <int dim>
