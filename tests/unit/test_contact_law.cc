@@ -186,3 +186,22 @@ BOOST_AUTO_TEST_CASE(held_contact_acts_on_separating_fields)
   BOOST_TEST(f[0].velocity[0] == 1.); // tangential untouched
   BOOST_TEST((momentum(f) - p0).norm() < 1e-14);
 }
+
+BOOST_AUTO_TEST_CASE(held_coulomb_contact_on_separating_field)
+{
+  // field 0 leaves a rigid plane at rest (normal relative velocity -1,
+  // slip 0.5): held, its normal velocity is removed, and its slip reduced
+  // by mu times that correction, 0.3
+  std::array<FieldAtNode<2>, 2> f;
+  f[0].mass             = 2.;
+  f[0].velocity         = vec(0.5, 1);
+  f[0].mass_gradient[1] = -1.;
+  f[1].mass             = 1.;
+  f[1].rigid            = true;
+  f[1].mass_gradient[1] = 1.;
+  mpm::contact::set_contact_normals(f.data(), 2);
+  BOOST_TEST(
+    mpm::contact::resolve_contact(law(Law::coulomb, 0.3), f.data(), 2, true));
+  BOOST_TEST(std::abs(f[0].velocity[0] - 0.2) < 1e-15);
+  BOOST_TEST(std::abs(f[0].velocity[1]) < 1e-15);
+}

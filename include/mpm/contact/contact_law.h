@@ -26,6 +26,17 @@ namespace mpm
       bool                   rigid = false;
     };
 
+    /// The first rigid field among the @p n at a node, or -1.
+    template <int dim>
+    inline int
+    first_rigid(const FieldAtNode<dim> *fields, const unsigned int n)
+    {
+      for (unsigned int f = 0; f < n; ++f)
+        if (fields[f].rigid)
+          return static_cast<int>(f);
+      return -1;
+    }
+
     /**
      * The contact normals of the @p n fields at a node
      * (doc/theory/contact.md): two fields share one direction, along the
@@ -46,10 +57,7 @@ namespace mpm
         return norm > 0 ? dealii::Tensor<1, dim>(g / norm) :
                           dealii::Tensor<1, dim>();
       };
-      int rigid = -1;
-      for (unsigned int f = 0; f < n && rigid < 0; ++f)
-        if (fields[f].rigid)
-          rigid = static_cast<int>(f);
+      const int rigid = first_rigid(fields, n);
       for (unsigned int f = 0; f < n; ++f)
         {
           const dealii::Tensor<1, dim> &g = fields[f].mass_gradient;
@@ -83,14 +91,12 @@ namespace mpm
                     const unsigned int         n,
                     const bool                 held = false)
     {
-      using Law = Parameters::Contact::Law;
+      using Law                    = Parameters::Contact::Law;
+      const int              rigid = first_rigid(fields, n);
       dealii::Tensor<1, dim> v_ref;
-      double                 mass  = 0;
-      int                    rigid = -1;
+      double                 mass = 0;
       for (unsigned int f = 0; f < n; ++f)
         {
-          if (fields[f].rigid && rigid < 0)
-            rigid = static_cast<int>(f);
           v_ref += fields[f].mass * fields[f].velocity;
           mass += fields[f].mass;
         }
@@ -115,9 +121,11 @@ namespace mpm
               const double normal_relative = relative * field.normal;
               if (!(normal_relative > 0) && !(held && normal_relative != 0))
                 continue;
+              // held contact may also pull separating fields together:
+              // the friction limit follows the normal correction's size
               const double                 approach = std::abs(normal_relative);
               const dealii::Tensor<1, dim> tangential =
-                relative - approach * field.normal;
+                relative - normal_relative * field.normal;
               const double slip = tangential.norm();
               if (law.law == Law::coulomb && slip <= law.friction * approach)
                 change = -relative; // stick
