@@ -42,8 +42,9 @@
 #   cantilever_aspect scripts/cantilever_aspect_study.sh: L/H 4 to 40,
 #                   nu 0 to 0.49, and in 3D L/H 4 to 20
 #                   (doc/benchmarks/cantilever.md)        8 + 86 min
-#   sliding_block   scripts/sliding_block_study.sh + plot, contact with
-#                   friction (doc/benchmarks/sliding_block.md)       7 min
+#   sliding_block   scripts/sliding_block_study.sh + plots, contact with
+#                   friction, the rolling cylinder with and without the
+#                   gap check (doc/benchmarks/sliding_block.md)      8 min
 #   colliding_disks scripts/colliding_disks_study.sh + plot, contact
 #                   through an impact (doc/benchmarks/colliding_disks.md) 2 min
 #   recompute       scripts/recompute_measures.py on every run with
@@ -201,7 +202,7 @@ part_strip_footing() {
 
 part_sliding_block() {
   if [ "$quick" = 1 ]; then
-    CYLINDER_MU=0.3 "$root/scripts/sliding_block_study.sh" 0.3 \
+    CYLINDER_MU=0.3 BLOCK_GAP_MU=0.3 "$root/scripts/sliding_block_study.sh" 0.3 \
       > "$res/sliding-block.txt"
   else
     FIGURE=1 "$root/scripts/sliding_block_study.sh" > "$res/sliding-block.txt"

@@ -30,6 +30,25 @@ namespace mpm
                         NumberOrConstant(),
                         "Coulomb's mu (Contact law = Coulomb), at least 0 (a "
                         "number or an expression of the Constants).");
+      prm.declare_entry(
+        "Gap check",
+        "false",
+        dealii::Patterns::Bool(),
+        "false: two fields at a node are in contact whenever they approach "
+        "each other there, which happens up to two cells before their "
+        "surfaces meet. true: also only where they touch: where the "
+        "distance along the contact normal between the fields' mass "
+        "centroids at the node (sum_p m_p N_ip x_p / sum_p m_p N_ip) is at "
+        "most what it is for two bodies that touch along a surface "
+        "through the node, plus the Gap tolerance (doc/theory/contact.md, "
+        "the gap check). Lets a cylinder roll (doc/benchmarks/"
+        "sliding_block.md).");
+      prm.declare_entry("Gap tolerance",
+                        "0.02",
+                        dealii::Patterns::Double(-0.5, 0.5),
+                        "With Gap check: added to the touching distance, in "
+                        "cell heights; below 0 bodies overlap before they "
+                        "meet, above 0 they meet before they touch.");
       prm.leave_subsection();
     }
 
@@ -43,12 +62,21 @@ namespace mpm
                             l == "frictionless"  ? Law::frictionless :
                                                    Law::coulomb;
       friction            = get_number(prm, "Friction coefficient");
+      gap_check           = prm.get_bool("Gap check");
+      gap_tolerance       = prm.get_double("Gap tolerance");
       prm.leave_subsection();
       if (!(friction >= 0))
         {
           std::ostringstream msg;
           msg << "Contact/Friction coefficient = " << friction
               << " must be at least 0";
+          throw InputError(msg.str());
+        }
+      if (!gap_check && gap_tolerance != 0.02)
+        {
+          std::ostringstream msg;
+          msg << "Contact/Gap tolerance = " << gap_tolerance
+              << " has no effect without Contact/Gap check = true";
           throw InputError(msg.str());
         }
     }

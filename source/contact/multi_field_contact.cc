@@ -94,6 +94,8 @@ namespace mpm
                                  KinematicsLayout<dim>::n_components);
           grid.initialize_vector(field.remap, dim);
           grid.initialize_vector(field.mass_gradient, dim);
+          if (law.gap_check)
+            grid.initialize_vector(field.centroid, centroid_components);
         }
       in_contact.clear();
     }
@@ -104,32 +106,61 @@ namespace mpm
       const BackgroundGrid<dim>       &grid,
       Particles::ParticleHandler<dim> &particles)
     {
-      using L                   = ParticleLayout<dim>;
-      constexpr unsigned int nv = shape_functions::n_q1<dim>;
-      std::vector<double *>  out(n);
+      using L                          = ParticleLayout<dim>;
+      constexpr unsigned int nv        = shape_functions::n_q1<dim>;
+      constexpr unsigned int nc        = centroid_components;
+      const bool             gap_check = law.gap_check;
+      std::vector<double *>  out(n), moment(n);
       for (unsigned int f = 0; f < n; ++f)
         {
           fields[f].mass_gradient = 0.;
           out[f]                  = fields[f].mass_gradient.begin();
+          if (gap_check)
+            {
+              fields[f].centroid = 0.;
+              moment[f]          = fields[f].centroid.begin();
+            }
         }
       Tensor<1, dim> G[nv];
+      double         N[nv];
       for_each_cell_with_particles(
         grid, particles, [&](const auto &cell, const auto &pic) {
-          const auto         &geo   = grid.geometry(cell);
-          const unsigned int *nodes = grid.nodes(cell);
+          const auto         &geo    = grid.geometry(cell);
+          const unsigned int *nodes  = grid.nodes(cell);
+          const double        height = grid.cell_height(cell);
           for (const auto &p : pic)
             {
-              const double *prop = p.get_properties().data();
-              double *const g =
-                out[field_of_body[static_cast<unsigned int>(prop[L::body])]];
+              const double      *prop = p.get_properties().data();
+              const unsigned int f =
+                field_of_body[static_cast<unsigned int>(prop[L::body])];
+              double *const g = out[f];
               geo.gradients(p.get_reference_location(), G);
               for (unsigned int v = 0; v < nv; ++v)
                 for (unsigned int d = 0; d < dim; ++d)
                   g[nodes[v] * dim + d] += prop[L::mass] * G[v][d];
+              if (!gap_check)
+                continue;
+              geo.values(p.get_reference_location(), N);
+              const Point<dim> &x = p.get_location();
+              const double size = std::pow(prop[L::volume], 1. / dim) / height;
+              for (unsigned int v = 0; v < nv; ++v)
+                {
+                  double *const c = moment[f] + nodes[v] * nc;
+                  const double  w = prop[L::mass] * N[v];
+                  for (unsigned int d = 0; d < dim; ++d)
+                    c[d] += w * x[d];
+                  c[centroid_mass] += w;
+                  c[centroid_height] += w * height;
+                  c[centroid_size] += w * size * size;
+                }
             }
         });
       for (auto &field : fields)
-        field.mass_gradient.compress(VectorOperation::add);
+        {
+          field.mass_gradient.compress(VectorOperation::add);
+          if (gap_check)
+            field.centroid.compress(VectorOperation::add);
+        }
     }
 
     template <int dim>
@@ -168,13 +199,15 @@ namespace mpm
       unsigned long                 active = 0;
       // the stress update's velocities keep contact where the motion has
       // it (Phase)
-      const bool hold_all = phase == Phase::start_of_step;
-      const bool hold     = phase == Phase::remap;
+      const bool hold_all  = phase == Phase::start_of_step;
+      const bool hold      = phase == Phase::remap;
+      const bool gap_check = law.gap_check;
       if (with_increment)
         in_contact.assign(grid.n_owned_nodes(), 0);
       for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
         {
-          unsigned int count = 0;
+          unsigned int count             = 0;
+          double       centroid_mass_sum = 0, height_sum = 0;
           for (unsigned int f = 0; f < n; ++f)
             {
               Field       &field = fields[f];
@@ -203,6 +236,19 @@ namespace mpm
               FieldAtNode<dim> &a = at_node[count];
               a.mass              = m;
               a.rigid             = field.rigid_body >= 0;
+              a.apart             = false;
+              if (gap_check)
+                {
+                  const double *c =
+                    field.centroid.begin() + i * centroid_components;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    a.centroid[d] = c[d] / c[centroid_mass];
+                  a.surface_offset =
+                    c[centroid_height] / c[centroid_mass] *
+                    centroid_offset(c[centroid_size] / c[centroid_mass]);
+                  centroid_mass_sum += c[centroid_mass];
+                  height_sum += c[centroid_height];
+                }
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   a.velocity[d] = k[K::velocity + d];
@@ -212,6 +258,9 @@ namespace mpm
               // a flat obstacle's own normal: its mass gradient's direction
               if (field.given_normal)
                 a.mass_gradient = field.normal;
+              // along a wall the bodies end at the wall, which is no
+              // surface between them: the normal lies in the wall
+              grid.constrain(i, a.mass_gradient.begin_raw());
               present[count++] = f;
             }
           if (count < 2)
@@ -219,6 +268,12 @@ namespace mpm
           for (unsigned int a = 0; a < count; ++a)
             uncorrected[a] = at_node[a].velocity;
           set_contact_normals(at_node.data(), count);
+          // the tolerance in the cell heights around the node
+          if (gap_check && mark_fields_apart(at_node.data(),
+                                             count,
+                                             law.gap_tolerance * height_sum /
+                                               centroid_mass_sum) < 2)
+            continue;
           if (!resolve_contact(law,
                                at_node.data(),
                                count,
@@ -308,6 +363,10 @@ namespace mpm
       const std::string law = "Contact/Contact law = " + law_name(contact.law);
       if (!contact.enabled())
         {
+          if (contact.gap_check)
+            throw InputError(
+              "Contact/Gap check = true has no effect with Contact/Contact "
+              "law = none");
           for (unsigned int b = 0; b < params.bodies.size(); ++b)
             {
               if (!params.bodies[b].contact_normal.empty())

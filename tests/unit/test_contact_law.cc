@@ -5,7 +5,9 @@
 // rigid field keeps its velocity and the others meet it; held contact (for
 // the stress update's velocities) acts on separating fields too; the
 // momentum of the fields at the node is kept to round-off, also with three
-// fields.
+// fields; the gap check finds fields apart by their centroids' distance
+// along the normal against the touching distance (whose formula matches a
+// particle lattice), and fields apart take no part.
 #define BOOST_TEST_MODULE contact_law
 #ifndef BOOST_TEST_DYN_LINK
 #  define BOOST_TEST_DYN_LINK
@@ -204,4 +206,97 @@ BOOST_AUTO_TEST_CASE(held_coulomb_contact_on_separating_field)
     mpm::contact::resolve_contact(law(Law::coulomb, 0.3), f.data(), 2, true));
   BOOST_TEST(std::abs(f[0].velocity[0] - 0.2) < 1e-15);
   BOOST_TEST(std::abs(f[0].velocity[1]) < 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(centroid_offset_of_a_particle_lattice)
+{
+  // n particles per cell direction at the centres of their sub-cells,
+  // filling the half-line beyond a node: their N-weighted centroid lies
+  // centroid_offset((1/n)^2) cell heights from the node
+  for (unsigned int n = 1; n <= 6; ++n)
+    {
+      double moment = 0, weight = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const double x = (k + 0.5) / n, N = 1 - x;
+          moment += N * x;
+          weight += N;
+        }
+      BOOST_TEST(std::abs(moment / weight -
+                          mpm::contact::centroid_offset(1. / (n * n))) < 1e-15);
+    }
+  BOOST_TEST(mpm::contact::centroid_offset(0.25) == 0.375);
+}
+
+BOOST_AUTO_TEST_CASE(gap_check_by_centroid_distance_along_the_normal)
+{
+  // field 0 above field 1: its normal points down, so the gap is
+  // centroid_0 - centroid_1 along y; a tangential offset does not count.
+  // Touching, the centroids would be 0.375 + 0.375 apart.
+  auto f              = two_fields(vec(0, -1), vec(0, 0)); // approaching
+  f[0].centroid       = vec(5, 0.8);
+  f[1].centroid       = vec(0, 0);
+  f[0].surface_offset = f[1].surface_offset = 0.375;
+  BOOST_TEST(mpm::contact::mark_fields_apart(f.data(), 2, 0.) == 0u);
+  BOOST_TEST(f[0].apart);
+  BOOST_TEST(f[1].apart);
+  BOOST_TEST(
+    !mpm::contact::resolve_contact(law(Law::frictionless), f.data(), 2));
+  BOOST_TEST(f[0].velocity[1] == -1.); // no contact: untouched
+  BOOST_TEST(mpm::contact::mark_fields_apart(f.data(), 2, 0.06) == 2u);
+  BOOST_TEST(
+    mpm::contact::resolve_contact(law(Law::frictionless), f.data(), 2));
+  BOOST_TEST(std::abs(f[0].velocity[1] - f[1].velocity[1]) < 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(gap_check_against_a_rigid_field)
+{
+  // a rigid plane below field 0, whose centroid lies 0.6 above the
+  // plane's; touching they would be 0.7 apart: in contact, unless the
+  // tolerance lets them overlap by more than 0.1
+  std::array<FieldAtNode<2>, 2> f;
+  f[0].mass             = 2.;
+  f[0].velocity         = vec(0, -1);
+  f[0].mass_gradient[1] = -1.;
+  f[0].centroid         = vec(0, 0.6);
+  f[0].surface_offset   = 0.3;
+  f[1].mass             = 1.;
+  f[1].rigid            = true;
+  f[1].mass_gradient[1] = 1.;
+  f[1].surface_offset   = 0.4;
+  mpm::contact::set_contact_normals(f.data(), 2);
+  BOOST_TEST(mpm::contact::mark_fields_apart(f.data(), 2, -0.2) == 0u);
+  BOOST_TEST(mpm::contact::mark_fields_apart(f.data(), 2, 0.) == 2u);
+  BOOST_TEST(
+    mpm::contact::resolve_contact(law(Law::frictionless), f.data(), 2));
+  BOOST_TEST(std::abs(f[0].velocity[1]) < 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(gap_check_leaves_the_touching_pair_of_three)
+{
+  // fields 0 and 1 touch, field 2 is far from both: 0 and 1 exchange
+  // momentum between them only, field 2 keeps its velocity
+  std::array<FieldAtNode<2>, 3> f;
+  const double                  m[3] = {1., 2., 3.};
+  const Tensor<1, 2>            v[3] = {vec(1, 0), vec(-1, 0), vec(0, 1)};
+  const Tensor<1, 2>            g[3] = {vec(1, 0), vec(-1, 0), vec(0, -1)};
+  const Tensor<1, 2>            x[3] = {vec(0, 0), vec(0.5, 0), vec(0, 1.5)};
+  for (unsigned int a = 0; a < 3; ++a)
+    {
+      f[a].mass           = m[a];
+      f[a].velocity       = v[a];
+      f[a].mass_gradient  = g[a];
+      f[a].centroid       = x[a];
+      f[a].surface_offset = 0.35;
+    }
+  mpm::contact::set_contact_normals(f.data(), 3);
+  BOOST_TEST(mpm::contact::mark_fields_apart(f.data(), 3, 0.) == 2u);
+  BOOST_TEST(f[2].apart);
+  const Tensor<1, 2> p01 = m[0] * v[0] + m[1] * v[1];
+  BOOST_TEST(
+    mpm::contact::resolve_contact(law(Law::frictionless), f.data(), 3));
+  BOOST_TEST((f[2].velocity - v[2]).norm() == 0.);
+  BOOST_TEST((m[0] * f[0].velocity + m[1] * f[1].velocity - p01).norm() <
+             1e-14);
+  BOOST_TEST(std::abs(f[0].velocity[0] - f[1].velocity[0]) < 1e-15);
 }

@@ -23,18 +23,83 @@ namespace mpm
       /// the contact normal, out of the field's bodies (unit, or zero
       /// where no direction is known)
       dealii::Tensor<1, dim> normal;
-      bool                   rigid = false;
+      /// sum_p m_p N_ip x_p / sum_p m_p N_ip over the field's particles,
+      /// and its distance from the field's surface when that passes
+      /// through the node (centroid_offset()): the gap check's
+      dealii::Tensor<1, dim> centroid;
+      double                 surface_offset = 0;
+      bool                   rigid          = false;
+      /// found apart from the other fields by the gap check: no contact
+      bool apart = false;
     };
 
-    /// The first rigid field among the @p n at a node, or -1.
+    /// The first rigid field among the @p n at a node that is not apart,
+    /// or -1.
     template <int dim>
     inline int
     first_rigid(const FieldAtNode<dim> *fields, const unsigned int n)
     {
       for (unsigned int f = 0; f < n; ++f)
-        if (fields[f].rigid)
+        if (fields[f].rigid && !fields[f].apart)
           return static_cast<int>(f);
       return -1;
+    }
+
+    /**
+     * The distance, in cell heights, from the surface of a body that
+     * fills a half-space bounded by a plane through a node to its nodal
+     * mass centroid sum_p m_p N_ip x_p / sum_p m_p N_ip, for particles
+     * of spacing l on a lattice aligned with the plane: 1/3 + (l/h)^2 / 6
+     * (1/3 in the continuum limit, 0.375 for 2 particles per cell
+     * direction). @p size_ratio_squared: (l/h)^2.
+     */
+    inline double
+    centroid_offset(const double size_ratio_squared)
+    {
+      return 1. / 3 + size_ratio_squared / 6;
+    }
+
+    /**
+     * The gap check (doc/theory/contact.md): the fields at a node touch
+     * where their mass centroids are no farther apart along the contact
+     * normal than if their surfaces met at the node, the sum of their
+     * surface_offset, plus @p tolerance (a length). A deformable field is
+     * apart when every other field's centroid lies farther than that
+     * beyond its own along its normal; a rigid field when every
+     * deformable field that is not apart does. Call after
+     * set_contact_normals(). Returns how many fields are not apart.
+     */
+    template <int dim>
+    inline unsigned int
+    mark_fields_apart(FieldAtNode<dim>  *fields,
+                      const unsigned int n,
+                      const double       tolerance)
+    {
+      auto touch = [&](const FieldAtNode<dim> &f, const FieldAtNode<dim> &g) {
+        return (g.centroid - f.centroid) * f.normal <=
+               f.surface_offset + g.surface_offset + tolerance;
+      };
+      unsigned int touching = 0;
+      for (unsigned int f = 0; f < n; ++f)
+        if (!fields[f].rigid)
+          {
+            fields[f].apart = true;
+            for (unsigned int g = 0; g < n; ++g)
+              if (g != f && touch(fields[f], fields[g]))
+                fields[f].apart = false;
+            touching += !fields[f].apart;
+          }
+      for (unsigned int f = 0; f < n; ++f)
+        if (fields[f].rigid)
+          {
+            fields[f].apart = true;
+            for (unsigned int g = 0; g < n; ++g)
+              if (!fields[g].rigid && !fields[g].apart &&
+                  touch(fields[g], fields[f]))
+                fields[f].apart = false;
+            touching += !fields[f].apart;
+          }
+      return touching;
     }
 
     /**
@@ -96,10 +161,11 @@ namespace mpm
       dealii::Tensor<1, dim> v_ref;
       double                 mass = 0;
       for (unsigned int f = 0; f < n; ++f)
-        {
-          v_ref += fields[f].mass * fields[f].velocity;
-          mass += fields[f].mass;
-        }
+        if (!fields[f].apart)
+          {
+            v_ref += fields[f].mass * fields[f].velocity;
+            mass += fields[f].mass;
+          }
       if (rigid >= 0)
         v_ref = fields[rigid].velocity;
       else
@@ -110,7 +176,7 @@ namespace mpm
       for (unsigned int f = 0; f < n; ++f)
         {
           FieldAtNode<dim> &field = fields[f];
-          if (field.rigid)
+          if (field.rigid || field.apart)
             continue;
           const dealii::Tensor<1, dim> relative = field.velocity - v_ref;
           dealii::Tensor<1, dim>       change;
@@ -144,7 +210,8 @@ namespace mpm
       // more fields at a node are shifted together to keep the sum.
       if (rigid < 0 && n > 2 && active)
         for (unsigned int f = 0; f < n; ++f)
-          fields[f].velocity -= momentum_change / mass;
+          if (!fields[f].apart)
+            fields[f].velocity -= momentum_change / mass;
       return active;
     }
   } // namespace contact

@@ -25,6 +25,10 @@ namespace mpm
       };
       Law    law      = Law::none;
       double friction = 0;
+      /// contact only where the fields touch (the gap check), within
+      /// gap_tolerance cell heights
+      bool   gap_check     = false;
+      double gap_tolerance = 0.02;
 
       bool
       enabled() const

@@ -94,7 +94,8 @@ namespace mpm
       /**
        * Each field's nodal mass gradient sum_p m_p grad N_ip, with the Q1
        * functions of the particle's cell, for the contact normals of the
-       * step (at the positions of its start).
+       * step (at the positions of its start); with a Gap cutoff also the
+       * fields' nodal mass centroids (Field::centroid).
        */
       void
       compute_mass_gradients(
@@ -141,7 +142,15 @@ namespace mpm
         bool                   given_normal = false;
         dealii::Tensor<1, dim> normal;
         NodalVector            p2g, kinematics, remap, mass_gradient;
+        /// per node sum_p m_p N_ip (x_p, 1, h_p, (l_p/h_p)^2), h_p the
+        /// height of the particle's cell and l_p = V_p^(1/dim) its size:
+        /// the gap check's centroid, cell height and surface offset
+        NodalVector centroid;
       };
+      static constexpr unsigned int centroid_mass       = dim,
+                                    centroid_height     = dim + 1,
+                                    centroid_size       = dim + 2,
+                                    centroid_components = dim + 3;
       Parameters::Contact        law;
       std::vector<unsigned char> field_of_body;
       unsigned int               n = 0;
