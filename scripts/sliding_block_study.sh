@@ -35,16 +35,17 @@ print(f"| {sys.argv[2]} | {sys.argv[3]} | {float(v['slide']):.4f} | "
       f"{v['step']} | {sys.argv[4]} |")
 PY
 }
-echo "| mu | h | slide [m] | exact [m] | (slide - exact) / frictionless slide | steps | wall [s] |"
-echo "|---|---|---|---|---|---|---|"
-for mu in ${@:-0 0.1 0.2 0.3 0.4 0.5 0.55 0.6 0.7}; do
-  for refine in 1 2; do
-    h=$(python3 -c "print(0.05/$refine)")
-    cat > "$work/case.prm" <<PRM
+# block_case MU REFINE GAP: the block of prm/sliding_block.prm with the
+# grid and both bodies refined REFINE times, Gap check = GAP
+block_case() {
+  cat > "$work/case.prm" <<PRM
 include $root/prm/sliding_block.prm
-set Constants = theta=30, mu=$mu, g=9.81, E=1e7, nu=0.3, rho=1000, top=0.5
+set Constants = theta=30, mu=$1, g=9.81, E=1e7, nu=0.3, rho=1000, top=0.5
 subsection Grid
-  set Subdivisions = $((40 * refine)), $((15 * refine))
+  set Subdivisions = $((40 * $2)), $((15 * $2))
+end
+subsection Contact
+  set Gap check = $3
 end
 subsection Output
   set Directory = $work/out
@@ -53,13 +54,46 @@ subsection Output
 end
 subsection Bodies
   subsection Body 0
-    set Subdivisions = $((10 * refine)), $((5 * refine))
+    set Subdivisions = $((10 * $2)), $((5 * $2))
   end
   subsection Body 1
-    set Subdivisions = $((40 * refine)), $((5 * refine))
+    set Subdivisions = $((40 * $2)), $((5 * $2))
   end
 end
 PRM
+}
+# cylinder_case MU REFINE GAP: prm/rolling_cylinder.prm likewise
+cylinder_case() {
+  cat > "$work/case.prm" <<PRM
+include $root/prm/rolling_cylinder.prm
+set Constants = theta=30, mu=$1, g=9.81, E=1e7, nu=0.3, rho=1000, cylinder=1
+subsection Grid
+  set Subdivisions = $((40 * $2)), $((15 * $2))
+end
+subsection Contact
+  set Gap check = $3
+end
+subsection Output
+  set Directory = $work/out
+  set Interval = 0.025
+  set Write vtu = false
+end
+subsection Bodies
+  subsection Body 0
+    set Refinements = $((2 + $2))
+  end
+  subsection Body 1
+    set Subdivisions = $((40 * $2)), $((5 * $2))
+  end
+end
+PRM
+}
+echo "| mu | h | slide [m] | exact [m] | (slide - exact) / frictionless slide | steps | wall [s] |"
+echo "|---|---|---|---|---|---|---|"
+for mu in ${@:-0 0.1 0.2 0.3 0.4 0.5 0.55 0.6 0.7}; do
+  for refine in 1 2; do
+    h=$(python3 -c "print(0.05/$refine)")
+    block_case "$mu" "$refine" false
     run "$mu" "$h"
     cp "$work/out/statistics.txt" "$work/stats_${mu}_${refine}.txt"
   done
@@ -87,62 +121,18 @@ for gap in true false; do
   for mu in ${CYLINDER_MU:-0 0.1 0.3 0.5}; do
     for refine in 1 2; do
       h=$(python3 -c "print(0.05/$refine)")
-      cat > "$work/case.prm" <<PRM
-include $root/prm/rolling_cylinder.prm
-set Constants = theta=30, mu=$mu, g=9.81, E=1e7, nu=0.3, rho=1000, cylinder=1
-subsection Grid
-  set Subdivisions = $((40 * refine)), $((15 * refine))
-end
-subsection Contact
-  set Gap check = $gap
-end
-subsection Output
-  set Directory = $work/out
-  set Interval = 0.025
-  set Write vtu = false
-end
-subsection Bodies
-  subsection Body 0
-    set Refinements = $((2 + refine))
-  end
-  subsection Body 1
-    set Subdivisions = $((40 * refine)), $((5 * refine))
-  end
-end
-PRM
+      cylinder_case "$mu" "$refine" "$gap"
       run "$mu" "$h, cylinder, gap check $gap"
       cp "$work/out/statistics.txt" "$work/cylinder_${gap}_${mu}_${refine}.txt"
     done
   done
 done
-# The block with the gap check, which the cylinder needs: contact at its
-# flat base engages only once it overlaps the plane, and lapses now and
-# then, so friction holds less.
+# The block with the gap check, which the cylinder needs: far from
+# sticking it changes nothing, near it the block creeps more.
 for mu in ${BLOCK_GAP_MU:-0.3 0.5}; do
   for refine in 1 2; do
     h=$(python3 -c "print(0.05/$refine)")
-    cat > "$work/case.prm" <<PRM
-include $root/prm/sliding_block.prm
-set Constants = theta=30, mu=$mu, g=9.81, E=1e7, nu=0.3, rho=1000, top=0.5
-subsection Grid
-  set Subdivisions = $((40 * refine)), $((15 * refine))
-end
-subsection Contact
-  set Gap check = true
-end
-subsection Output
-  set Directory = $work/out
-  set Write vtu = false
-end
-subsection Bodies
-  subsection Body 0
-    set Subdivisions = $((10 * refine)), $((5 * refine))
-  end
-  subsection Body 1
-    set Subdivisions = $((40 * refine)), $((5 * refine))
-  end
-end
-PRM
+    block_case "$mu" "$refine" true
     run "$mu" "$h, gap check"
   done
 done

@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <mpm/parameters/parameters.h>
+#include <mpm/particles/particle_layout.h>
 #include <mpm/solver/simulator.h>
 
 #include <algorithm>
@@ -50,6 +51,43 @@ namespace mpm_test
     return sim
       .integrator_values()[std::find(columns.begin(), columns.end(), name) -
                            columns.begin()];
+  }
+
+  /// Run @p sim to @p t_end with steps of @p fraction of the stable one.
+  template <int dim>
+  void
+  run_until(mpm::Simulator<dim> &sim, const double t_end, const double fraction)
+  {
+    while (sim.time() < t_end - 1e-12)
+      sim.do_time_step(
+        std::min(fraction * sim.stable_time_step(), t_end - sim.time()));
+  }
+
+  /// The mass-weighted mean displacement x - X of body @p body's
+  /// particles, over every rank.
+  template <int dim>
+  dealii::Tensor<1, dim>
+  mean_displacement(mpm::Simulator<dim> &sim, const unsigned int body)
+  {
+    using L               = mpm::ParticleLayout<dim>;
+    double local[dim + 1] = {};
+    for (const auto &p : sim.particles())
+      {
+        const double *prop = p.get_properties().data();
+        if (prop[L::body] != body)
+          continue;
+        local[dim] += prop[L::mass];
+        for (unsigned int d = 0; d < dim; ++d)
+          local[d] += prop[L::mass] * (p.get_location()[d] - prop[L::X + d]);
+      }
+    double sum[dim + 1];
+    dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(local, dim + 1),
+                                MPI_COMM_WORLD,
+                                dealii::ArrayView<double>(sum, dim + 1));
+    dealii::Tensor<1, dim> u;
+    for (unsigned int d = 0; d < dim; ++d)
+      u[d] = sum[d] / sum[dim];
+    return u;
   }
 
   /// Output stream that writes on rank 0 only.

@@ -3,15 +3,12 @@
 // degrees, Coulomb friction mu = 0.3, slides 1/2 g (sin theta - mu cos
 // theta) t^2; with mu = 0.7 > tan theta it stays. On 1 and 2 ranks the
 // printed figures are the same.
-#include <mpm/particles/particle_layout.h>
-
 #include "../tests.h"
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  using L            = mpm::ParticleLayout<3>;
   const double theta = 30 * M_PI / 180, g = 9.81, t_end = 0.2;
   const double frictionless = 0.5 * g * std::sin(theta) * t_end * t_end;
   for (const double mu : {0.3, 0.7})
@@ -76,22 +73,8 @@ subsection Bodies
 end
 )";
       mpm_test::Case<3> c(prm.str(), 2);
-      auto             &sim = *c.simulator;
-      while (sim.time() < t_end - 1e-12)
-        sim.do_time_step(
-          std::min(0.5 * sim.stable_time_step(), t_end - sim.time()));
-      double local[2] = {};
-      for (const auto &p : sim.particles())
-        {
-          const double *prop = p.get_properties().data();
-          if (prop[L::body] != 0)
-            continue;
-          local[0] += prop[L::mass];
-          local[1] += prop[L::mass] * (p.get_location()[0] - prop[L::X]);
-        }
-      const double m = dealii::Utilities::MPI::sum(local[0], MPI_COMM_WORLD);
-      const double slide =
-        dealii::Utilities::MPI::sum(local[1], MPI_COMM_WORLD) / m;
+      mpm_test::run_until(*c.simulator, t_end, 0.5);
+      const double slide = mpm_test::mean_displacement(*c.simulator, 0)[0];
       const double a =
         std::tan(theta) > mu ? g * (std::sin(theta) - mu * std::cos(theta)) : 0;
       const double       exact = 0.5 * a * t_end * t_end;

@@ -10,15 +10,12 @@
 // centre travels 1/3 g sin theta t^2 with the gap check (Gap check),
 // and less than 0.8 of that without it (the nodes the cylinder shares with
 // the plane hold it as a flat face would).
-#include <mpm/particles/particle_layout.h>
-
 #include "../tests.h"
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  using L            = mpm::ParticleLayout<2>;
   const double theta = 30 * M_PI / 180, g = 9.81, t_end = 0.3;
   const double frictionless = 0.5 * g * std::sin(theta) * t_end * t_end;
   // the plane along the grid (tilted gravity) and drawn inclined across
@@ -43,29 +40,14 @@ main(int argc, char **argv)
             << "subsection Output\n"
             << "  set Write vtu = false\nend\n";
         mpm_test::Case<2> c(prm.str(), 2);
-        auto             &sim  = *c.simulator;
-        const double      beta = rotated ? theta : 0.;
-        while (sim.time() < t_end - 1e-12)
-          sim.do_time_step(
-            std::min(0.5 * sim.stable_time_step(), t_end - sim.time()));
-        double local[2] = {};
-        for (const auto &p : sim.particles())
-          {
-            const double *prop = p.get_properties().data();
-            if (prop[L::body] != 0)
-              continue;
-            const auto &x = p.get_location();
-            local[0] += prop[L::mass];
-            local[1] +=
-              prop[L::mass] * ((x[0] - prop[L::X]) * std::cos(beta) -
-                               (x[1] - prop[L::X + 1]) * std::sin(beta));
-          }
-        const double m = dealii::Utilities::MPI::sum(local[0], MPI_COMM_WORLD);
-        const double slide =
-          dealii::Utilities::MPI::sum(local[1], MPI_COMM_WORLD) / m;
-        const double a = std::tan(theta) > mu ?
-                           g * (std::sin(theta) - mu * std::cos(theta)) :
-                           0;
+        mpm_test::run_until(*c.simulator, t_end, 0.5);
+        // along the plane
+        const auto   u     = mpm_test::mean_displacement(*c.simulator, 0);
+        const double beta  = rotated ? theta : 0.;
+        const double slide = u[0] * std::cos(beta) - u[1] * std::sin(beta);
+        const double a     = std::tan(theta) > mu ?
+                               g * (std::sin(theta) - mu * std::cos(theta)) :
+                               0;
         const double exact =
           law == "no separation" ? 0 : 0.5 * a * t_end * t_end;
         std::ostringstream tag;
@@ -86,23 +68,9 @@ main(int argc, char **argv)
           << "subsection Output\n  set Write vtu = false\n"
           << "  set Write csv = false\nend\n";
       mpm_test::Case<2> c(prm.str(), 2);
-      auto             &sim = *c.simulator;
-      while (sim.time() < t_end - 1e-12)
-        sim.do_time_step(
-          std::min(0.5 * sim.stable_time_step(), t_end - sim.time()));
-      double local[2] = {};
-      for (const auto &p : sim.particles())
-        {
-          const double *prop = p.get_properties().data();
-          if (prop[L::body] != 0)
-            continue;
-          local[0] += prop[L::mass];
-          local[1] += prop[L::mass] * (p.get_location()[0] - prop[L::X]);
-        }
-      const double travel =
-        dealii::Utilities::MPI::sum(local[1], MPI_COMM_WORLD) /
-        dealii::Utilities::MPI::sum(local[0], MPI_COMM_WORLD);
-      const double       rolling = g * std::sin(theta) * t_end * t_end / 3;
+      mpm_test::run_until(*c.simulator, t_end, 0.5);
+      const double travel  = mpm_test::mean_displacement(*c.simulator, 0)[0];
+      const double rolling = g * std::sin(theta) * t_end * t_end / 3;
       std::ostringstream tag;
       tag << "rolling cylinder, mu = 0.5, gap check " << (gap ? "on" : "off")
           << ": travel / rolling travel";
