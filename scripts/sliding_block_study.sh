@@ -35,17 +35,18 @@ print(f"| {sys.argv[2]} | {sys.argv[3]} | {float(v['slide']):.4f} | "
       f"{v['step']} | {sys.argv[4]} |")
 PY
 }
-# block_case MU REFINE GAP: the block of prm/sliding_block.prm with the
-# grid and both bodies refined REFINE times, Gap check = GAP
-block_case() {
+# write_case PRM MU REFINE GAP CONSTANT BODY0: prm/PRM.prm with friction
+# MU, the grid and both bodies refined REFINE times (BODY0: body 0's
+# refinement entry), Gap check = GAP, and one more CONSTANT
+write_case() {
   cat > "$work/case.prm" <<PRM
-include $root/prm/sliding_block.prm
-set Constants = theta=30, mu=$1, g=9.81, E=1e7, nu=0.3, rho=1000, top=0.5
+include $root/prm/$1.prm
+set Constants = theta=30, mu=$2, g=9.81, E=1e7, nu=0.3, rho=1000, $5
 subsection Grid
-  set Subdivisions = $((40 * $2)), $((15 * $2))
+  set Subdivisions = $((40 * $3)), $((15 * $3))
 end
 subsection Contact
-  set Gap check = $3
+  set Gap check = $4
 end
 subsection Output
   set Directory = $work/out
@@ -54,39 +55,22 @@ subsection Output
 end
 subsection Bodies
   subsection Body 0
-    set Subdivisions = $((10 * $2)), $((5 * $2))
+    $6
   end
   subsection Body 1
-    set Subdivisions = $((40 * $2)), $((5 * $2))
+    set Subdivisions = $((40 * $3)), $((5 * $3))
   end
 end
 PRM
 }
-# cylinder_case MU REFINE GAP: prm/rolling_cylinder.prm likewise
+# block_case / cylinder_case MU REFINE GAP
+block_case() {
+  write_case sliding_block "$1" "$2" "$3" top=0.5 \
+    "set Subdivisions = $((10 * $2)), $((5 * $2))"
+}
 cylinder_case() {
-  cat > "$work/case.prm" <<PRM
-include $root/prm/rolling_cylinder.prm
-set Constants = theta=30, mu=$1, g=9.81, E=1e7, nu=0.3, rho=1000, cylinder=1
-subsection Grid
-  set Subdivisions = $((40 * $2)), $((15 * $2))
-end
-subsection Contact
-  set Gap check = $3
-end
-subsection Output
-  set Directory = $work/out
-  set Interval = 0.025
-  set Write vtu = false
-end
-subsection Bodies
-  subsection Body 0
-    set Refinements = $((2 + $2))
-  end
-  subsection Body 1
-    set Subdivisions = $((40 * $2)), $((5 * $2))
-  end
-end
-PRM
+  write_case rolling_cylinder "$1" "$2" "$3" cylinder=1 \
+    "set Refinements = $((2 + $2))"
 }
 echo "| mu | h | slide [m] | exact [m] | (slide - exact) / frictionless slide | steps | wall [s] |"
 echo "|---|---|---|---|---|---|---|"
