@@ -44,7 +44,7 @@
 #                   (doc/benchmarks/cantilever.md)        8 + 86 min
 #   sliding_block   scripts/sliding_block_study.sh + plots, contact with
 #                   friction, the rolling cylinder with and without the
-#                   gap check (doc/benchmarks/sliding_block.md)      8 min
+#                   gap check (doc/benchmarks/sliding_block.md)    5.5 min
 #   colliding_disks scripts/colliding_disks_study.sh + plot, contact
 #                   through an impact (doc/benchmarks/colliding_disks.md) 2 min
 #   recompute       scripts/recompute_measures.py on every run with
