@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <mpm/contact/contact_parameters.h>
 #include <mpm/utilities/input_error.h>
 #include <mpm/utilities/numbers.h>
@@ -44,7 +46,7 @@ namespace mpm
         "the gap check). Lets a cylinder roll (doc/benchmarks/"
         "sliding_block.md).");
       prm.declare_entry("Gap tolerance",
-                        "0.02",
+                        dealii::Utilities::to_string(default_gap_tolerance),
                         dealii::Patterns::Double(-0.5, 0.5),
                         "With Gap check: added to the touching distance, in "
                         "cell heights; below 0 bodies overlap before they "
@@ -72,7 +74,7 @@ namespace mpm
               << " must be at least 0";
           throw InputError(msg.str());
         }
-      if (!gap_check && gap_tolerance != 0.02)
+      if (!gap_check && gap_tolerance != default_gap_tolerance)
         {
           std::ostringstream msg;
           msg << "Contact/Gap tolerance = " << gap_tolerance

@@ -39,24 +39,30 @@ namespace mpm
         return field;
       }
 
-      /// The Contact field numbers of the bodies.
+      /// A body's parameters, from the parameter file's or the
+      /// simulation's list of bodies.
       template <int dim>
-      std::vector<int>
-      given_fields(const std::vector<Parameters::Body<dim>> &bodies)
+      const Parameters::Body<dim> &
+      parameters_of(const Parameters::Body<dim> &body)
       {
-        std::vector<int> given;
-        for (const auto &body : bodies)
-          given.push_back(body.contact_field);
-        return given;
+        return body;
       }
 
       template <int dim>
+      const Parameters::Body<dim> &
+      parameters_of(const Body<dim> &body)
+      {
+        return body.prm;
+      }
+
+      /// The Contact field numbers of the @p bodies.
+      template <typename BodyList>
       std::vector<int>
-      given_fields(const std::vector<Body<dim>> &bodies)
+      given_fields(const BodyList &bodies)
       {
         std::vector<int> given;
         for (const auto &body : bodies)
-          given.push_back(body.prm.contact_field);
+          given.push_back(parameters_of(body).contact_field);
         return given;
       }
     } // namespace
@@ -164,6 +170,29 @@ namespace mpm
     }
 
     template <int dim>
+    double
+    MultiFieldContact<dim>::set_centroids(const unsigned int  i,
+                                          FieldAtNode<dim>   *at_node,
+                                          const unsigned int *present,
+                                          const unsigned int  count) const
+    {
+      double mass = 0, height = 0;
+      for (unsigned int a = 0; a < count; ++a)
+        {
+          const double *c =
+            fields[present[a]].centroid.begin() + i * centroid_components;
+          for (unsigned int d = 0; d < dim; ++d)
+            at_node[a].centroid[d] = c[d] / c[centroid_mass];
+          at_node[a].surface_offset =
+            c[centroid_height] / c[centroid_mass] *
+            centroid_offset(c[centroid_size] / c[centroid_mass]);
+          mass += c[centroid_mass];
+          height += c[centroid_height];
+        }
+      return height / mass;
+    }
+
+    template <int dim>
     std::string
     MultiFieldContact<dim>::resolve(const BackgroundGrid<dim>    &grid,
                                     const std::vector<Body<dim>> &bodies,
@@ -206,8 +235,7 @@ namespace mpm
         in_contact.assign(grid.n_owned_nodes(), 0);
       for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
         {
-          unsigned int count             = 0;
-          double       centroid_mass_sum = 0, height_sum = 0;
+          unsigned int count = 0;
           for (unsigned int f = 0; f < n; ++f)
             {
               Field       &field = fields[f];
@@ -237,18 +265,6 @@ namespace mpm
               a.mass              = m;
               a.rigid             = field.rigid_body >= 0;
               a.apart             = false;
-              if (gap_check)
-                {
-                  const double *c =
-                    field.centroid.begin() + i * centroid_components;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    a.centroid[d] = c[d] / c[centroid_mass];
-                  a.surface_offset =
-                    c[centroid_height] / c[centroid_mass] *
-                    centroid_offset(c[centroid_size] / c[centroid_mass]);
-                  centroid_mass_sum += c[centroid_mass];
-                  height_sum += c[centroid_height];
-                }
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   a.velocity[d] = k[K::velocity + d];
@@ -268,11 +284,12 @@ namespace mpm
           for (unsigned int a = 0; a < count; ++a)
             uncorrected[a] = at_node[a].velocity;
           set_contact_normals(at_node.data(), count);
-          // the tolerance in the cell heights around the node
-          if (gap_check && mark_fields_apart(at_node.data(),
-                                             count,
-                                             law.gap_tolerance * height_sum /
-                                               centroid_mass_sum) < 2)
+          if (gap_check &&
+              mark_fields_apart(
+                at_node.data(),
+                count,
+                law.gap_tolerance *
+                  set_centroids(i, at_node.data(), present.data(), count)) < 2)
             continue;
           if (!resolve_contact(law,
                                at_node.data(),

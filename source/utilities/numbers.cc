@@ -88,18 +88,28 @@ namespace mpm
                            "): " + e.GetMsg());
         }
     }
+
+    /// @p part of entry @p entry's @p text as a number or an expression
+    /// of the Constants, finite.
+    double
+    finite_number(const std::string &entry,
+                  const std::string &text,
+                  const std::string &part)
+    {
+      double value;
+      if (!plain_number(part, value))
+        value = constant_expression(entry, part);
+      if (!std::isfinite(value))
+        throw InputError(entry + " = '" + text + "' is not finite");
+      return value;
+    }
   } // namespace
 
   double
   get_number(const dealii::ParameterHandler &prm, const std::string &entry)
   {
     const std::string text = prm.get(entry);
-    double            value;
-    if (!plain_number(text, value))
-      value = constant_expression(entry, text);
-    if (!std::isfinite(value))
-      throw InputError(entry + " = '" + text + "' is not finite");
-    return value;
+    return finite_number(entry, text, text);
   }
 
   std::vector<double>
@@ -114,12 +124,7 @@ namespace mpm
                        std::to_string(n) + " values separated by ';'");
     std::vector<double> values(n);
     for (unsigned int k = 0; k < n; ++k)
-      {
-        if (!plain_number(parts[k], values[k]))
-          values[k] = constant_expression(entry, parts[k]);
-        if (!std::isfinite(values[k]))
-          throw InputError(entry + " = '" + text + "' is not finite");
-      }
+      values[k] = finite_number(entry, text, parts[k]);
     return values;
   }
 } // namespace mpm

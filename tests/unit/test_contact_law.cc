@@ -55,6 +55,21 @@ namespace
     return v;
   }
 
+  /// Field 0 (mass 2, velocity @p v0) on a rigid field at rest below it.
+  std::array<FieldAtNode<2>, 2>
+  on_rigid_plane(const Tensor<1, 2> &v0)
+  {
+    std::array<FieldAtNode<2>, 2> f;
+    f[0].mass             = 2.;
+    f[0].velocity         = v0;
+    f[0].mass_gradient[1] = -1.;
+    f[1].mass             = 1.;
+    f[1].rigid            = true;
+    f[1].mass_gradient[1] = 1.;
+    mpm::contact::set_contact_normals(f.data(), 2);
+    return f;
+  }
+
   template <std::size_t n>
   Tensor<1, 2>
   momentum(const std::array<FieldAtNode<2>, n> &f)
@@ -114,14 +129,7 @@ BOOST_AUTO_TEST_CASE(coulomb_sticks_below_the_friction_limit)
 BOOST_AUTO_TEST_CASE(coulomb_slip_is_limited_by_mu)
 {
   // field 0 over a rigid field at rest: approach 1, slip 2, mu = 0.3
-  std::array<FieldAtNode<2>, 2> f;
-  f[0].mass             = 2.;
-  f[0].velocity         = vec(2, -1);
-  f[0].mass_gradient[1] = -1.;
-  f[1].mass             = 1.;
-  f[1].rigid            = true;
-  f[1].mass_gradient[1] = 1.;
-  mpm::contact::set_contact_normals(f.data(), 2);
+  auto f = on_rigid_plane(vec(2, -1));
   BOOST_TEST(
     mpm::contact::resolve_contact(law(Law::coulomb, 0.3), f.data(), 2));
   BOOST_TEST(std::abs(f[0].velocity[0] - (2 - 0.3 * 1)) < 1e-15);
@@ -194,14 +202,7 @@ BOOST_AUTO_TEST_CASE(held_coulomb_contact_on_separating_field)
   // field 0 leaves a rigid plane at rest (normal relative velocity -1,
   // slip 0.5): held, its normal velocity is removed, and its slip reduced
   // by mu times that correction, 0.3
-  std::array<FieldAtNode<2>, 2> f;
-  f[0].mass             = 2.;
-  f[0].velocity         = vec(0.5, 1);
-  f[0].mass_gradient[1] = -1.;
-  f[1].mass             = 1.;
-  f[1].rigid            = true;
-  f[1].mass_gradient[1] = 1.;
-  mpm::contact::set_contact_normals(f.data(), 2);
+  auto f = on_rigid_plane(vec(0.5, 1));
   BOOST_TEST(
     mpm::contact::resolve_contact(law(Law::coulomb, 0.3), f.data(), 2, true));
   BOOST_TEST(std::abs(f[0].velocity[0] - 0.2) < 1e-15);
@@ -254,17 +255,10 @@ BOOST_AUTO_TEST_CASE(gap_check_against_a_rigid_field)
   // a rigid plane below field 0, whose centroid lies 0.6 above the
   // plane's; touching they would be 0.7 apart: in contact, unless the
   // tolerance lets them overlap by more than 0.1
-  std::array<FieldAtNode<2>, 2> f;
-  f[0].mass             = 2.;
-  f[0].velocity         = vec(0, -1);
-  f[0].mass_gradient[1] = -1.;
-  f[0].centroid         = vec(0, 0.6);
-  f[0].surface_offset   = 0.3;
-  f[1].mass             = 1.;
-  f[1].rigid            = true;
-  f[1].mass_gradient[1] = 1.;
-  f[1].surface_offset   = 0.4;
-  mpm::contact::set_contact_normals(f.data(), 2);
+  auto f              = on_rigid_plane(vec(0, -1));
+  f[0].centroid       = vec(0, 0.6);
+  f[0].surface_offset = 0.3;
+  f[1].surface_offset = 0.4;
   BOOST_TEST(mpm::contact::mark_fields_apart(f.data(), 2, -0.2) == 0u);
   BOOST_TEST(mpm::contact::mark_fields_apart(f.data(), 2, 0.) == 2u);
   BOOST_TEST(

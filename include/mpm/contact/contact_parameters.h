@@ -27,8 +27,9 @@ namespace mpm
       double friction = 0;
       /// contact only where the fields touch (the gap check), within
       /// gap_tolerance cell heights
-      bool   gap_check     = false;
-      double gap_tolerance = 0.02;
+      static constexpr double default_gap_tolerance = 0.02;
+      bool                    gap_check             = false;
+      double                  gap_tolerance         = default_gap_tolerance;
 
       bool
       enabled() const

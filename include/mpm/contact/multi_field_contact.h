@@ -94,8 +94,8 @@ namespace mpm
       /**
        * Each field's nodal mass gradient sum_p m_p grad N_ip, with the Q1
        * functions of the particle's cell, for the contact normals of the
-       * step (at the positions of its start); with a Gap cutoff also the
-       * fields' nodal mass centroids (Field::centroid).
+       * step (at the positions of its start); with the gap check also
+       * the fields' nodal mass centroids (Field::centroid).
        */
       void
       compute_mass_gradients(
@@ -147,6 +147,15 @@ namespace mpm
         /// the gap check's centroid, cell height and surface offset
         NodalVector centroid;
       };
+      /// The centroids and surface offsets at owned node @p i of the
+      /// @p count fields @p present there, into @p at_node; returns the
+      /// mass-weighted cell height around the node.
+      double
+      set_centroids(const unsigned int  i,
+                    FieldAtNode<dim>   *at_node,
+                    const unsigned int *present,
+                    const unsigned int  count) const;
+
       static constexpr unsigned int centroid_mass       = dim,
                                     centroid_height     = dim + 1,
                                     centroid_size       = dim + 2,
