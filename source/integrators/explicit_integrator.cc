@@ -73,6 +73,10 @@ namespace mpm
     if (state.domain_functions)
       state.domain_functions->forget_stencils();
     const double t_new = state.current_time + dt;
+    // Leapfrog start: the grid velocities of every step are then those at
+    // the middle of the step, which the position update x += dt v assumes.
+    const double kick =
+      state.params.time.leapfrog_start && state.current_step == 0 ? dt / 2 : dt;
     if (state.params.time.scheme == Scheme::usf)
       {
         particle_to_grid(P2GContent::mass_momentum);
@@ -89,14 +93,14 @@ namespace mpm
           state.domain_functions->forget_stencils();
         particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
                                        P2GContent::force);
-        update_grid(dt);
+        update_grid(kick);
         resolve_contact(Phase::grid_update, t_new);
         grid_to_particle(dt);
       }
     else
       {
         particle_to_grid(P2GContent::mass_momentum_force);
-        update_grid(dt);
+        update_grid(kick);
         resolve_contact(Phase::grid_update, t_new);
         grid_to_particle(dt);
         if (state.params.time.scheme == Scheme::musl)

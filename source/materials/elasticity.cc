@@ -68,6 +68,36 @@ namespace mpm
 
 
 
+      void
+      declare_increment_parameter(dealii::ParameterHandler &prm)
+      {
+        prm.declare_entry(
+          "Strain increment",
+          "start of step",
+          dealii::Patterns::Selection("start of step|midpoint"),
+          "Where the step's displacement gradient is taken for the strain "
+          "increment and the rotation of the stress. start of step: "
+          "h = dt L on the configuration at the start of the step (first "
+          "order in dt: a rigid rotation by omega dt strains by "
+          "(omega dt)^2 / 2 every step). midpoint: h (I + h/2)^-1 on the "
+          "midpoint configuration (Hughes and Winget 1980): a rigid "
+          "rotation of any step turns the stress exactly and strains it "
+          "not at all; second order in dt otherwise. A body that turns "
+          "for many steps (the spinning disk) needs midpoint.");
+      }
+
+
+
+      StrainIncrement
+      parse_increment_parameter(dealii::ParameterHandler &prm)
+      {
+        return prm.get("Strain increment") == "midpoint" ?
+                 StrainIncrement::midpoint :
+                 StrainIncrement::start_of_step;
+      }
+
+
+
       IsotropicConstants
       parse_parameters(dealii::ParameterHandler &prm)
       {
@@ -210,19 +240,37 @@ namespace mpm
 
 
 
+      Tensor<2, 3>
+      increment_gradient(const PointKinematics &kinematics,
+                         const StrainIncrement  increment)
+      {
+        const Tensor<2, 3> h = kinematics.dt * kinematics.velocity_gradient;
+        if (increment == StrainIncrement::start_of_step)
+          return h;
+        // The step moves x_n to x_n + h x_n; the displacement's gradient
+        // on the midpoint configuration x_n + h x_n / 2 is h (I + h/2)^-1.
+        // For a rigid rotation of angle theta the grid gives h = (R - I)
+        // exactly (positions move by it), and this is 2 (R - I)(R + I)^-1,
+        // skew: no strain, and the Cayley rotation of its half is R.
+        const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
+        return h * dealii::invert(I + 0.5 * h);
+      }
+
+
+
       void
       hypoelastic_update(const IsotropicConstants &c,
                          const PointKinematics    &kinematics,
                          const KinematicAssumption k,
+                         const StrainIncrement     increment,
                          SymmetricTensor<2, 3>    &stress)
       {
-        const Tensor<2, 3> &L = kinematics.velocity_gradient;
-        if (L[0][2] == 0. && L[1][2] == 0. && L[2][0] == 0. && L[2][1] == 0.)
-          stress =
-            rotate_about_z(stress, 0.25 * kinematics.dt * (L[0][1] - L[1][0]));
+        const Tensor<2, 3> G = increment_gradient(kinematics, increment);
+        if (G[0][2] == 0. && G[1][2] == 0. && G[2][0] == 0. && G[2][1] == 0.)
+          stress = rotate_about_z(stress, 0.25 * (G[0][1] - G[1][0]));
         else
-          stress = rotate(stress, hughes_winget_rotation(L, kinematics.dt));
-        stress += stress_increment(c, kinematics.dt * dealii::symmetrize(L), k);
+          stress = rotate(stress, hughes_winget_rotation(G, 1.));
+        stress += stress_increment(c, dealii::symmetrize(G), k);
         zero_constrained_components(stress, k);
       }
 
@@ -231,27 +279,33 @@ namespace mpm
       hypoelastic_tangent(const IsotropicConstants    &c,
                           const PointKinematics       &kinematics,
                           const KinematicAssumption    k,
+                          const StrainIncrement        increment,
                           const SymmetricTensor<2, 3> &stress_n,
                           Tensor<4, 3>                &tangent)
       {
         const Tensor<2, 3> h = kinematics.dt * kinematics.velocity_gradient;
         const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
-        const Tensor<2, 3> A = 0.25 * (h - dealii::transpose(h));
-        const Tensor<2, 3> R =
-          hughes_winget_rotation(kinematics.velocity_gradient, kinematics.dt);
+        const bool         midpoint = increment == StrainIncrement::midpoint;
+        const Tensor<2, 3> M = midpoint ? dealii::invert(I + 0.5 * h) : I;
+        const Tensor<2, 3> G = h * M;
+        const Tensor<2, 3> A = 0.25 * (G - dealii::transpose(G));
+        const Tensor<2, 3> R = hughes_winget_rotation(G, 1.);
         const Tensor<2, 3> to_rotation = dealii::invert(I - A);
+        const Tensor<2, 3> before_dh   = midpoint ? I - 0.5 * G : I;
         const Tensor<2, 3> S           = stress_n;
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = 0; b < 3; ++b)
             {
               Tensor<2, 3> dh;
-              dh[a][b]                    = 1.;
-              const Tensor<2, 3>    dA    = 0.25 * (dh - dealii::transpose(dh));
+              dh[a][b] = 1.;
+              // midpoint: dG = (I - G/2) dh (I + h/2)^-1
+              const Tensor<2, 3>    dG    = before_dh * dh * M;
+              const Tensor<2, 3>    dA    = 0.25 * (dG - dealii::transpose(dG));
               const Tensor<2, 3>    dR    = to_rotation * dA * (I + R);
               const Tensor<2, 3>    dRSRt = dR * S * dealii::transpose(R);
               SymmetricTensor<2, 3> d_sigma =
                 dealii::symmetrize(dRSRt + dealii::transpose(dRSRt)) +
-                stress_increment(c, dealii::symmetrize(dh), k);
+                stress_increment(c, dealii::symmetrize(dG), k);
               zero_constrained_components(d_sigma, k);
               for (unsigned int i = 0; i < 3; ++i)
                 for (unsigned int j = 0; j < 3; ++j)

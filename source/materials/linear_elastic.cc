@@ -11,6 +11,7 @@ namespace mpm
     LinearElastic::declare_parameters(dealii::ParameterHandler &prm)
     {
       elasticity::declare_parameters(prm);
+      elasticity::declare_increment_parameter(prm);
     }
 
 
@@ -35,6 +36,7 @@ namespace mpm
     LinearElastic::parse_parameters(dealii::ParameterHandler &prm)
     {
       constants = elasticity::parse_parameters(prm);
+      increment = elasticity::parse_increment_parameter(prm);
     }
 
 
@@ -44,10 +46,8 @@ namespace mpm
                                  SymmetricTensor<2, 3> &stress,
                                  const ArrayView<double> &) const
     {
-      elasticity::hypoelastic_update(constants,
-                                     point,
-                                     kinematic_assumption(),
-                                     stress);
+      elasticity::hypoelastic_update(
+        constants, point, kinematic_assumption(), increment, stress);
     }
 
 
@@ -59,7 +59,7 @@ namespace mpm
                                   Tensor<4, 3> &tangent) const
     {
       elasticity::hypoelastic_tangent(
-        constants, point, kinematic_assumption(), stress_n, tangent);
+        constants, point, kinematic_assumption(), increment, stress_n, tangent);
       return true;
     }
 

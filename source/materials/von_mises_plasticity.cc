@@ -15,6 +15,7 @@ namespace mpm
     VonMisesPlasticity::declare_parameters(dealii::ParameterHandler &prm)
     {
       elasticity::declare_parameters(prm);
+      elasticity::declare_increment_parameter(prm);
       prm.declare_entry("Yield stress",
                         "1e6",
                         mpm::NumberOrConstant(),
@@ -53,6 +54,7 @@ namespace mpm
     VonMisesPlasticity::parse_parameters(dealii::ParameterHandler &prm)
     {
       constants = elasticity::parse_parameters(prm);
+      increment = elasticity::parse_increment_parameter(prm);
       sigma_y   = mpm::get_number(prm, "Yield stress");
       H         = mpm::get_number(prm, "Hardening modulus");
       if (!(sigma_y > 0) || !std::isfinite(sigma_y))
@@ -100,10 +102,8 @@ namespace mpm
       double &alpha = history[0];
 
       // Elastic trial state.
-      elasticity::hypoelastic_update(constants,
-                                     point,
-                                     kinematic_assumption(),
-                                     stress);
+      elasticity::hypoelastic_update(
+        constants, point, kinematic_assumption(), increment, stress);
 
       return_to_yield_surface(stress, alpha);
     }
@@ -118,9 +118,10 @@ namespace mpm
     {
       AssertDimension(history_n.size(), 1);
       const KinematicAssumption k = kinematic_assumption();
-      elasticity::hypoelastic_tangent(constants, point, k, stress_n, tangent);
+      elasticity::hypoelastic_tangent(
+        constants, point, k, increment, stress_n, tangent);
       SymmetricTensor<2, 3> trial = stress_n;
-      elasticity::hypoelastic_update(constants, point, k, trial);
+      elasticity::hypoelastic_update(constants, point, k, increment, trial);
       // A trial state on the yield surface to round-off (a particle that
       // yielded in the last step, at the first iteration of the next one)
       // takes the elastoplastic tangent: otherwise round-off would pick

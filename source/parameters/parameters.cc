@@ -140,6 +140,20 @@ namespace mpm
         "standard (with Q1 it is unstable), and the FLIP fraction must "
         "stay 1 (unused). Refused by the implicit integrators.");
       prm.declare_entry(
+        "Leapfrog start",
+        "false",
+        Patterns::Bool(),
+        "true: the first explicit step adds half a step of acceleration to "
+        "the nodal velocities, v^1/2 = v^0 + dt/2 a^0, so that every grid "
+        "velocity is the one at the middle of its step, as the position "
+        "update x += dt v takes it (leapfrog). A body given its steady "
+        "motion at t = 0 (a spinning disk) then starts on the scheme's own "
+        "steady orbit instead of vibrating with an amplitude of order dt; "
+        "a body falling from rest is at the exact position at every step. "
+        "The velocities and the kinetic energy written are then those of "
+        "half a step before the output time. false: the first step adds a "
+        "whole step. Explicit integrator only.");
+      prm.declare_entry(
         "Damping coefficient",
         "0",
         Patterns::Double(0),
@@ -175,15 +189,16 @@ namespace mpm
       scheme                            = s == "USF" ? Scheme::usf :
                                           s == "USL" ? Scheme::usl :
                                                        Scheme::musl;
-      step_control  = prm.get("Time step control") == "fixed" ?
-                        StepControl::fixed :
-                        StepControl::cfl;
-      time_step     = prm.get_double("Time step");
-      cfl_number    = prm.get_double("CFL number");
-      flip_fraction = prm.get_double("FLIP fraction");
-      apic          = prm.get("Velocity transfer") == "APIC";
-      damping       = prm.get_double("Damping coefficient");
-      max_steps     = prm.get_integer("Maximum number of steps");
+      step_control   = prm.get("Time step control") == "fixed" ?
+                         StepControl::fixed :
+                         StepControl::cfl;
+      time_step      = prm.get_double("Time step");
+      cfl_number     = prm.get_double("CFL number");
+      flip_fraction  = prm.get_double("FLIP fraction");
+      apic           = prm.get("Velocity transfer") == "APIC";
+      leapfrog_start = prm.get_bool("Leapfrog start");
+      damping        = prm.get_double("Damping coefficient");
+      max_steps      = prm.get_integer("Maximum number of steps");
       prm.leave_subsection();
       if (integrator == Integrator::quasi_static)
         {
@@ -192,10 +207,11 @@ namespace mpm
               "Time stepping/Integrator = quasi-static has no stability "
               "limit to take a CFL fraction of: set Time step control = "
               "fixed and the load step as Time step");
-          if (damping != 0. || apic)
+          if (damping != 0. || apic || leapfrog_start)
             throw InputError(
               "Time stepping/Integrator = quasi-static has no dynamics: "
-              "remove Damping coefficient and Velocity transfer = APIC");
+              "remove Damping coefficient, Velocity transfer = APIC and "
+              "Leapfrog start");
         }
       if (integrator == Integrator::newmark)
         {
@@ -209,6 +225,11 @@ namespace mpm
               "Time stepping/Integrator = Newmark updates the particle "
               "velocity by the Newmark velocity change at the nodes (FLIP): "
               "remove Velocity transfer = APIC and FLIP fraction");
+          if (leapfrog_start)
+            throw InputError(
+              "Time stepping/Leapfrog start is for the explicit integrator: "
+              "Newmark's velocities and positions are already at the same "
+              "time; remove the entry");
           if (newmark_beta < newmark_gamma / 2)
             throw InputError(
               "Time stepping/Newmark beta = " + std::to_string(newmark_beta) +

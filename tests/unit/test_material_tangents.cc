@@ -33,12 +33,15 @@ namespace
   T
   make_model(const KinematicAssumption k,
              const double              nu           = 0.3,
-             const std::string        &yield_stress = "")
+             const std::string        &yield_stress = "",
+             const std::string        &increment    = "")
   {
     dealii::ParameterHandler prm;
     T::declare_parameters(prm);
     prm.set("Young's modulus", "1e6");
     prm.set("Poisson's ratio", std::to_string(nu));
+    if (!increment.empty())
+      prm.set("Strain increment", increment);
     if (!yield_stress.empty())
       {
         prm.set("Yield stress", yield_stress);
@@ -145,7 +148,10 @@ BOOST_AUTO_TEST_CASE(linear_elastic_every_assumption)
                        KinematicAssumption::uniaxial_strain,
                        KinematicAssumption::uniaxial_stress})
     for (const double nu : {0., 0.3, 0.4999})
-      BOOST_TEST(tangent_error(make_model<LinearElastic>(k, nu), k) < 1e-6);
+      for (const char *increment : {"start of step", "midpoint"})
+        BOOST_TEST(
+          tangent_error(make_model<LinearElastic>(k, nu, "", increment), k) <
+          1e-6);
 }
 
 BOOST_AUTO_TEST_CASE(neo_hookean)
@@ -167,9 +173,11 @@ BOOST_AUTO_TEST_CASE(von_mises_elastic_and_plastic_steps)
                        KinematicAssumption::uniaxial_strain})
     for (const char *yield : {"1e9", "1e4"})
       for (const double nu : {0., 0.3, 0.49})
-        BOOST_TEST(tangent_error(make_model<VonMisesPlasticity>(k, nu, yield),
-                                 k,
-                                 0.01) < 1e-6);
+        for (const char *increment : {"start of step", "midpoint"})
+          BOOST_TEST(tangent_error(
+                       make_model<VonMisesPlasticity>(k, nu, yield, increment),
+                       k,
+                       0.01) < 1e-6);
 }
 
 BOOST_AUTO_TEST_CASE(newtonian_fluid_both_equations_of_state)

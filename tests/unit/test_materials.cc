@@ -257,6 +257,52 @@ BOOST_AUTO_TEST_CASE(plasticity_rigid_spin)
   check_rigid_spin(model, stress, axis, history);
 }
 
+BOOST_AUTO_TEST_CASE(midpoint_increment_of_a_finite_rotation_step)
+{
+  // A step that moves every point by a rigid rotation of 0.4 rad
+  // (h = R - I, as positions move on the grid): with the midpoint gradient
+  // the stress turns by exactly R and is not strained; the start-of-step
+  // gradient strains it by about theta^2 / 2 of the elastic modulus.
+  Tensor<1, 3> axis;
+  axis[0] = 0.3;
+  axis[1] = -1;
+  axis[2] = 2;
+  axis /= axis.norm();
+  const double       theta = 0.4;
+  const Tensor<2, 3> R     = rotation(axis, theta);
+  PointKinematics    point;
+  point.dt                            = 0.5;
+  point.velocity_gradient             = (R - identity()) / point.dt;
+  point.F                             = R;
+  const SymmetricTensor<2, 3> initial = general_stress(1e8);
+  const SymmetricTensor<2, 3> exact   = rotate(initial, R);
+
+  Parameters p              = steel;
+  p["Strain increment"]     = "midpoint";
+  const auto            mid = make_model<LinearElastic>(p);
+  SymmetricTensor<2, 3> s   = initial;
+  mid.update_stress(point, s, ArrayView<double>());
+  BOOST_TEST(relative_difference(s, exact) < 1e-12);
+
+  const auto start = make_model<LinearElastic>(steel);
+  s                = initial;
+  start.update_stress(point, s, ArrayView<double>());
+  // 200 GPa times a strain of about theta^2 / 2 = 0.08 against 1e8
+  BOOST_TEST(relative_difference(s, exact) > 10);
+
+  // Many small steps of a rigid rotation: the midpoint update follows the
+  // rotation to round-off (2000 steps of about 1e-13 each; the
+  // start-of-step update would be off by 2000 (2e-3)^2 / 2 of the modulus).
+  const unsigned int n_steps = 2000;
+  const Tensor<2, 3> r       = rotation(axis, 2e-3);
+  point.velocity_gradient    = (r - identity()) / point.dt;
+  s                          = initial;
+  for (unsigned int n = 0; n < n_steps; ++n)
+    mid.update_stress(point, s, ArrayView<double>());
+  BOOST_TEST(relative_difference(s, rotate(initial, rotation(axis, 4.))) <
+             2e-9);
+}
+
 BOOST_AUTO_TEST_CASE(neo_hookean_frame_indifference)
 {
   const auto   model = make_model<NeoHookean>(steel);

@@ -68,6 +68,27 @@ namespace mpm
 
 
 
+      /// The configuration on which the rate models (linear elastic,
+      /// von Mises) take the gradient of a step's displacement h x
+      /// (h = dt L, L on the start-of-step configuration).
+      enum class StrainIncrement
+      {
+        /// h itself: first order in dt; a rigid rotation of angle
+        /// omega dt strains the material by (omega dt)^2 / 2
+        start_of_step,
+        /// h (I + h/2)^-1 (Hughes and Winget 1980): exactly skew for a
+        /// rigid rotation of any angle, second order in dt otherwise
+        midpoint
+      };
+
+      /// Declare "Strain increment" in the current subsection.
+      void
+      declare_increment_parameter(dealii::ParameterHandler &prm);
+
+      /// Read the entry declared by declare_increment_parameter().
+      StrainIncrement
+      parse_increment_parameter(dealii::ParameterHandler &prm);
+
       /// Declare "Young's modulus" and "Poisson's ratio" in the current
       /// subsection.
       void
@@ -89,15 +110,18 @@ namespace mpm
                        const KinematicAssumption            k);
 
       /**
-       * d sigma_ij / d h_kl of hypoelastic_update() (h = dt L): the
-       * derivative of the Hughes-Winget rotation of @p stress_n,
-       * dR = (I - A)^-1 dA (I + R) with A = skew(h) / 2, plus the elastic
-       * moduli under the assumption @p k.
+       * d sigma_ij / d h_kl of hypoelastic_update() (h = dt L): with the
+       * increment gradient G (h, or h (I + h/2)^-1 with dG = (I - G/2) dh
+       * (I + h/2)^-1 at the midpoint); the Hughes-Winget rotation of @p
+       * stress_n moves by dR = (I - A)^-1 dA (I + R) with A = skew(G) / 2, and
+       * the elastic part by the moduli under the assumption @p k applied to
+       * sym(dG).
        */
       void
       hypoelastic_tangent(const IsotropicConstants            &c,
                           const PointKinematics               &kinematics,
                           const KinematicAssumption            k,
+                          const StrainIncrement                increment,
                           const dealii::SymmetricTensor<2, 3> &stress_n,
                           dealii::Tensor<4, 3>                &tangent);
 
@@ -135,14 +159,24 @@ namespace mpm
       zero_constrained_components(dealii::SymmetricTensor<2, 3> &stress,
                                   const KinematicAssumption      k);
 
+      /// Gradient G of the step's displacement h x (h = dt L) on the
+      /// configuration chosen by @p increment.
+      dealii::Tensor<2, 3>
+      increment_gradient(const PointKinematics &kinematics,
+                         const StrainIncrement  increment);
+
       /**
-       * Incrementally objective hypoelastic update (Jaumann rate):
-       * stress <- R stress R^T + C : (sym(L) dt).
+       * Incrementally objective hypoelastic update (Jaumann rate) of
+       * Hughes and Winget (1980): with the increment gradient G,
+       * stress <- R stress R^T + C : sym(G), R the Cayley transform of
+       * skew(G)/2. With the midpoint gradient a rigid rotation of any step
+       * turns the stress exactly and strains it not at all.
        */
       void
       hypoelastic_update(const IsotropicConstants      &c,
                          const PointKinematics         &kinematics,
                          const KinematicAssumption      k,
+                         const StrainIncrement          increment,
                          dealii::SymmetricTensor<2, 3> &stress);
     } // namespace elasticity
   }   // namespace materials

@@ -66,6 +66,8 @@ namespace mpm
 
     private:
       elasticity::IsotropicConstants constants;
+      elasticity::StrainIncrement    increment =
+        elasticity::StrainIncrement::start_of_step;
     };
   } // namespace materials
 } // namespace mpm

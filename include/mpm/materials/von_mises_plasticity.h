@@ -108,8 +108,10 @@ namespace mpm
                               double                &alpha) const;
 
       elasticity::IsotropicConstants constants;
-      double                         sigma_y = 1;
-      double                         H       = 0;
+      elasticity::StrainIncrement    increment =
+        elasticity::StrainIncrement::start_of_step;
+      double sigma_y = 1;
+      double H       = 0;
     };
   } // namespace materials
 } // namespace mpm

@@ -56,18 +56,20 @@ namespace mpm
         quasi_static,
         newmark
       };
-      Integrator   integrator    = Integrator::explicit_dynamics;
-      Scheme       scheme        = Scheme::musl;
-      StepControl  step_control  = StepControl::cfl;
-      double       end_time      = 1.0;
-      double       time_step     = 1e-3;
-      double       cfl_number    = 0.5;
-      double       flip_fraction = 1.0;
-      bool         apic          = false; ///< affine velocity transfer
-      double       damping       = 0.0;
-      unsigned int max_steps     = 0;
-      double       newmark_beta  = 0.25;
-      double       newmark_gamma = 0.5;
+      Integrator  integrator    = Integrator::explicit_dynamics;
+      Scheme      scheme        = Scheme::musl;
+      StepControl step_control  = StepControl::cfl;
+      double      end_time      = 1.0;
+      double      time_step     = 1e-3;
+      double      cfl_number    = 0.5;
+      double      flip_fraction = 1.0;
+      bool        apic          = false; ///< affine velocity transfer
+      /// first explicit step adds dt/2 of acceleration (leapfrog)
+      bool         leapfrog_start = false;
+      double       damping        = 0.0;
+      unsigned int max_steps      = 0;
+      double       newmark_beta   = 0.25;
+      double       newmark_gamma  = 0.5;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
