@@ -21,7 +21,9 @@
 #   mms             scripts/mms_study.sh 2D and 3D, every family,
 #                   + scripts/plot_mms.py                           11 min
 #   spinning_disk   scripts/spinning_disk_study.sh with FLIP and the
-#                   APIC table at CFL 0.1 (5 runs)                  26 min
+#                   APIC table at CFL 0.1 (5 runs), the cured panels
+#                   and scripts/spinning_disk_sweep.sh over omega
+#                   and nu for one turn                             75 min
 #   axial_bar       scripts/axial_bar_study.sh                      7 s
 #   cooks_membrane  scripts/cooks_membrane_study.sh + plot
 #                   (a) 21 runs at h = 4, 2, 1; (b) 14 runs at h = 4
@@ -256,7 +258,14 @@ part_spinning_disk() {
         PLOT="$res/spinning_disk_apic/variants.png" \
         "$root/scripts/spinning_disk_study.sh" "$res/spinning_disk_apic" &&
       CFL=0.1 VARIANTS="CPDI+filter+force+APIC" PLOT="$res/sd_force_apic/variants.png" \
-        "$root/scripts/spinning_disk_study.sh" "$res/sd_force_apic"
+        "$root/scripts/spinning_disk_study.sh" "$res/sd_force_apic" &&
+      END=6.2 INTERVAL=0.155 JOBS=2 PLOT="$figs/spinning_disk_cured.png" \
+        VARIANTS="standard+midpoint+leapfrog standard+filter+midpoint+leapfrog
+        CPDI+midpoint+leapfrog CPDI+filter+midpoint+leapfrog CPDI+APIC+midpoint+leapfrog
+        CPDI+filter+force+APIC+midpoint+leapfrog CPDI+filter+APIC+midpoint+leapfrog
+        CPDI+enriched+APIC+midpoint+leapfrog" \
+        "$root/scripts/spinning_disk_study.sh" "$res/sd_cured" &&
+      "$root/scripts/spinning_disk_sweep.sh" "$res/sd_sweep"
   fi
 }
 
