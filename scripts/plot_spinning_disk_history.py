@@ -3,7 +3,8 @@
 
 Usage: plot_spinning_disk_history.py OUT PNG
 
-Reads OUT/w<omega>_nu<nu>_n<cells>/output/statistics.txt and draws the RMS
+Reads OUT/w<omega>_nu<nu>_n<cells>/<variant>/output/statistics.txt and
+draws the RMS
 errors of sigma_rr and sigma_rt (over sigma0) against the number of turns,
 one line per run, with the 0.5% and 1% marks.
 """
@@ -27,12 +28,12 @@ def read(path):
 
 def main():
     out, png = pathlib.Path(sys.argv[1]), sys.argv[2]
-    runs = sorted(out.glob("w*_nu*_n*/output/statistics.txt"))
+    runs = sorted(out.glob("w*_nu*_n*/*/output/statistics.txt"))
     if not runs:
-        sys.exit(f"{out}: no runs (w*_nu*_n*/output/statistics.txt)")
+        sys.exit(f"{out}: no runs (w*_nu*_n*/*/output/statistics.txt)")
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharex=True)
     for path in runs:
-        name = path.parent.parent.name
+        name = path.parent.parent.parent.name
         w, nu, n = re.match(r"w(.+)_nu(.+)_n(.+)", name).groups()
         period = 2 * math.pi / float(w)
         s = read(path)

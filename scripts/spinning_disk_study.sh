@@ -19,7 +19,10 @@
 # time, default 1), REFINEMENTS (refinements of the disk's body mesh,
 # default that of prm/spinning_disk.prm, 4: 12 288 particles; 3 gives
 # 3 072), VTU (true: also write ParaView files, default false), INTERVAL
-# (output interval, default END), MPM (executable), PLOT (the PNG, default
+# (output interval, default END), CSV (false: no particle tables, default
+# true), CONSTANTS (the file's Constants line, e.g. "a=1, omega=4, E=1e6,
+# nu=0.49, rho=1000"; default that of prm/spinning_disk.prm), MPM
+# (executable), PLOT (the PNG, default
 # doc/figures/spinning_disk_variants.png; PLOT=none skips the picture).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -32,6 +35,9 @@ mpm=${MPM:-$root/build/mpm}
 cfl=${CFL:-0.5}
 vtu=${VTU:-false}
 interval=${INTERVAL:-$end}
+csv=${CSV:-true}
+constants=""
+[ -n "${CONSTANTS:-}" ] && constants="set Constants = $CONSTANTS"
 refinements=""
 [ -n "${REFINEMENTS:-}" ] && refinements="set Refinements = $REFINEMENTS"
 plot=${PLOT:-$root/doc/figures/spinning_disk_variants.png}
@@ -64,6 +70,7 @@ run_variant() {
   rm -rf "$dir"; mkdir -p "$dir"
   cat > "$dir/case.prm" <<PRM
 include $root/prm/spinning_disk.prm
+$constants
 subsection Grid
   set Subdivisions = $cells
 end
@@ -80,6 +87,7 @@ subsection Output
   set Directory = $dir/output
   set Interval = $interval
   set Write vtu = $vtu
+  set Write csv = $csv
 end
 subsection Bodies
   subsection Body 0
@@ -127,7 +135,7 @@ PRM
 start=$(date +%s)
 # at most $jobs runs at a time (xargs -P); each prints its row when it ends
 export -f run_variant
-export root out cells end cfl interval vtu refinements np mpm h bind
+export root out cells end cfl interval vtu csv constants refinements np mpm h bind
 printf '%s\n' $variants |
   xargs -P "$jobs" -I{} bash -c 'run_variant "$1"; cat "$out/$1/row.csv"' _ {}
 echo "variant,h,cfl,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_change,energy_change,sigma_rr_max,sigma_rt_max,wall_s" > "$table"

@@ -37,6 +37,17 @@ plot=${PLOT:-$out/history.png}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$out"
 
+# The method as a variant of scripts/spinning_disk_study.sh, which writes
+# and runs every case.
+variant=$family
+[ "$transfer" = APIC ] && variant+="+APIC"
+[ "$increment" = midpoint ] && variant+="+midpoint"
+[ "$leapfrog" = true ] && variant+="+leapfrog"
+case "$filter" in
+  written) variant+="+filter" ;;
+  force) variant+="+filter+force" ;;
+esac
+
 # Runs one (omega, nu, cells) case in $out/w<omega>_nu<nu>_n<cells>/ and
 # writes its row.csv.
 run_case() {
@@ -47,52 +58,15 @@ run_case() {
   period=$(awk -v w="$omega" 'BEGIN{printf "%.12g", 2 * 3.141592653589793 / w}')
   end=$(awk -v p="$period" -v n="$turns" 'BEGIN{printf "%.12g", p * n}')
   interval=$(awk -v p="$period" 'BEGIN{printf "%.12g", p / 40}')
-  local filter_lines=""
-  case "$filter" in
-    written) filter_lines="set Stress filter = assumed stress" ;;
-    force) filter_lines="set Stress filter = assumed stress
-      set Filtered stress = force only" ;;
-  esac
-  rm -rf "$dir"; mkdir -p "$dir"
-  cat > "$dir/case.prm" <<PRM
-include $root/prm/spinning_disk.prm
-set Constants = a=1, omega=$omega, E=1e6, nu=$nu, rho=1000
-subsection Grid
-  set Subdivisions = $cells
-end
-subsection Shape functions
-  set Family = $family
-end
-subsection Time stepping
-  set End time = $end
-  set CFL number = $cfl
-  set Velocity transfer = $transfer
-  set Leapfrog start = $leapfrog
-end
-subsection Output
-  set Directory = $dir/output
-  set Interval = $interval
-  set Write vtu = false
-  set Write csv = false
-end
-subsection Bodies
-  subsection Body 0
-    set Refinements = $refinements
-    subsection Material
-      subsection Linear elastic
-        set Strain increment = $increment
-      end
-    end
-    subsection Locking remedies
-      $filter_lines
-    end
-  end
-end
-PRM
+  rm -rf "$dir"
   local t0=$(date +%s)
-  if ! "$mpm" "$dir/case.prm" > "$dir/log.txt" 2>&1; then
+  CONSTANTS="a=1, omega=$omega, E=1e6, nu=$nu, rho=1000" END=$end INTERVAL=$interval \
+    CELLS=$cells REFINEMENTS=$refinements CFL=$cfl CSV=false VARIANTS=$variant \
+    NP=1 JOBS=$jobs PLOT=none MPM=$mpm "$root/scripts/spinning_disk_study.sh" "$dir" > /dev/null
+  local statistics="$dir/$variant/output/statistics.txt"
+  if grep -q ',failed,' "$dir/$variant/row.csv"; then
     echo "$omega,$nu,$cells,failed" > "$dir/row.csv"
-    echo "omega=$omega nu=$nu cells=$cells failed: $(grep -m1 'mpm:' "$dir/log.txt")" >&2
+    echo "omega=$omega nu=$nu cells=$cells failed: $(grep -m1 'mpm:' "$dir/$variant/log.txt")" >&2
     return 0
   fi
   local wall=$(( $(date +%s) - t0 ))
@@ -110,18 +84,18 @@ PRM
       turns = last_t / p
       printf "%s,%s,%s,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.3g,%.3g,%s\n", w, nu, n,
         turns, rr1, rt1, rrmax, rtmax, last_rr, last_rt, dL / turns, dE / turns, wall
-    }' "$dir/output/statistics.txt" > "$dir/row.csv"
+    }' "$statistics" > "$dir/row.csv"
 }
 
 start=$(date +%s)
 export -f run_case
-export root out turns cfl family transfer increment leapfrog filter mpm
+export root out turns cfl variant jobs mpm
 for omega in $omegas; do for nu in $nus; do for cells in $cells_list; do
   echo "$omega $nu $cells"
 done; done; done |
   xargs -P "$jobs" -L1 bash -c 'run_case "$1" "$2" "$3"; cat "$out/w$1_nu$2_n$3/row.csv"' _
 table="$out/sweep.csv"
-echo "# family=$family transfer=$transfer increment=$increment leapfrog=$leapfrog filter=$filter cfl=$cfl" > "$table"
+echo "# variant=$variant cfl=$cfl" > "$table"
 echo "omega,nu,cells,turns,sigma_rr_max_turn1,sigma_rt_max_turn1,sigma_rr_max,sigma_rt_max,sigma_rr_end,sigma_rt_end,angular_momentum_per_turn,energy_per_turn,wall_s" >> "$table"
 for omega in $omegas; do for nu in $nus; do for cells in $cells_list; do
   cat "$out/w${omega}_nu${nu}_n${cells}/row.csv" >> "$table"
