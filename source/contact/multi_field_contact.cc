@@ -104,6 +104,8 @@ namespace mpm
             grid.initialize_vector(field.centroid, centroid_components);
         }
       in_contact.clear();
+      // node numbers of the old partition
+      nodal_forces.clear();
     }
 
     template <int dim>
@@ -232,7 +234,11 @@ namespace mpm
       const bool hold      = phase == Phase::remap;
       const bool gap_check = law.gap_check;
       if (with_increment)
-        in_contact.assign(grid.n_owned_nodes(), 0);
+        {
+          in_contact.assign(grid.n_owned_nodes(), 0);
+          nodal_forces.clear();
+        }
+      const double dt = t - t_old;
       for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
         {
           unsigned int count = 0;
@@ -300,6 +306,12 @@ namespace mpm
           ++active;
           if (with_increment)
             in_contact[i] = 1;
+          // the force is the momentum change of the first deformable field
+          // (fields in number order) not found apart: between two fields the
+          // one force they exchange, with a sign that does not depend on
+          // round-off
+          Tensor<1, dim> impulse;
+          bool           recorded = false;
           for (unsigned int a = 0; a < count; ++a)
             {
               if (at_node[a].rigid)
@@ -315,6 +327,12 @@ namespace mpm
               // a wall's constraint wins over the contact
               grid.constrain(i, v);
               grid.constrain(i, change);
+              if (!recorded && !at_node[a].apart)
+                {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    impulse[d] = at_node[a].mass * change[d];
+                  recorded = true;
+                }
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   k[K::velocity + d] = v[d];
@@ -330,6 +348,8 @@ namespace mpm
                     }
                 }
             }
+          if (with_increment && dt > 0)
+            nodal_forces.push_back({i, grid.node_position(i), impulse / dt});
         }
       if (with_increment)
         contact_nodes = active;

@@ -77,18 +77,24 @@ namespace mpm
 
   template <int dim>
   void
-  OutputWriter<dim>::write_grid_vtu(const BackgroundGrid<dim> &grid,
-                                    const NodalVector         &p2g,
-                                    const NodalVector         &kinematics,
-                                    const double               time)
+  OutputWriter<dim>::write_grid_vtu(
+    const BackgroundGrid<dim>              &grid,
+    const NodalVector                      &p2g,
+    const NodalVector                      &kinematics,
+    const contact::NodalContactForces<dim> *contact_forces,
+    const double                            time)
   {
     using P = transfer::P2GLayout<dim>;
     using K = KinematicsLayout<dim>;
     // Unpack to one scalar vector per field in the DoF numbering.
     const auto               part = grid.node_partitioner();
-    std::vector<NodalVector> fields(1 + dim);
+    std::vector<NodalVector> fields(contact_forces ? 1 + 2 * dim : 1 + dim);
     for (auto &f : fields)
       f.reinit(part);
+    if (contact_forces)
+      for (const auto &f : *contact_forces)
+        for (unsigned int d = 0; d < dim; ++d)
+          fields[1 + dim + d].local_element(f.node) = f.force[d];
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       {
         fields[0].local_element(i) =
@@ -106,6 +112,10 @@ namespace mpm
     for (unsigned int d = 0; d < dim; ++d)
       out.add_data_vector(fields[1 + d],
                           std::string("nodal_velocity_") + axis[d]);
+    if (contact_forces)
+      for (unsigned int d = 0; d < dim; ++d)
+        out.add_data_vector(fields[1 + dim + d],
+                            std::string("contact_force_") + axis[d]);
     Vector<float> subdomain(grid.triangulation().n_active_cells());
     for (auto &s : subdomain)
       s = grid.triangulation().locally_owned_subdomain();
@@ -173,6 +183,53 @@ namespace mpm
          << n_outputs << ".csv";
     write_file_atomically(name.str(), out.str());
     (void)time;
+  }
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_contact_csv(
+    const contact::NodalContactForces<dim> &forces)
+  {
+    // Rows of (x, f), gathered on rank 0 and sorted by position.
+    constexpr unsigned int row = 2 * dim;
+    std::vector<double>    local;
+    local.reserve(forces.size() * row);
+    for (const auto &f : forces)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(f.position[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(f.force[d]);
+      }
+    const auto all = Utilities::MPI::gather(comm, local, 0);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+
+    std::vector<const double *> rows;
+    for (const auto &part : all)
+      for (std::size_t i = 0; i < part.size(); i += row)
+        rows.push_back(part.data() + i);
+    std::sort(rows.begin(), rows.end(), [](const double *a, const double *b) {
+      return std::lexicographical_compare(a, a + dim, b, b + dim);
+    });
+
+    std::ostringstream out;
+    const char        *axis[3] = {"x", "y", "z"};
+    for (unsigned int d = 0; d < dim; ++d)
+      out << (d ? "," : "") << axis[d];
+    for (unsigned int d = 0; d < dim; ++d)
+      out << ",f_" << axis[d];
+    out << '\n' << std::setprecision(10);
+    for (const double *r : rows)
+      {
+        for (unsigned int c = 0; c < row; ++c)
+          out << (c ? "," : "") << r[c];
+        out << '\n';
+      }
+    std::ostringstream name;
+    name << directory << "/contact-" << std::setw(5) << std::setfill('0')
+         << n_outputs << ".csv";
+    write_file_atomically(name.str(), out.str());
   }
 
   template class OutputWriter<1>;

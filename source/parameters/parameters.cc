@@ -590,14 +590,17 @@ namespace mpm
                         "true",
                         Patterns::Bool(),
                         "Also write the background grid fields (nodal "
-                        "mass, nodal velocity, the MPI rank of each cell: "
+                        "mass, nodal velocity, the MPI rank of each cell, "
+                        "and with contact the nodal contact force: "
                         "grid.pvd) when Write vtu is on.");
       prm.declare_entry("Write csv",
                         "true",
                         Patterns::Bool(),
                         "Particle table particles-NNNNN.csv, sorted by id, "
                         "with every particle property (gathered on rank "
-                        "0).");
+                        "0); with contact also contact-NNNNN.csv, the "
+                        "nodes where the contact law acted in the last "
+                        "step with their contact force.");
       prm.declare_entry("Test summary file",
                         "",
                         Patterns::FileName(),

@@ -272,10 +272,20 @@ namespace mpm
   std::vector<double>
   Simulator<dim>::benchmark_values()
   {
-    return benchmark ? benchmark->measure(state.particle_handler,
-                                          state.current_time,
-                                          comm) :
-                       std::vector<double>();
+    if (!benchmark)
+      return {};
+    return benchmark->measure_with_contact(state.particle_handler,
+                                           state.current_time,
+                                           comm,
+                                           contact_forces());
+  }
+
+  template <int dim>
+  const contact::NodalContactForces<dim> &
+  Simulator<dim>::contact_forces() const
+  {
+    static const contact::NodalContactForces<dim> none;
+    return state.contact ? state.contact->forces() : none;
   }
 
   template <int dim>

@@ -189,6 +189,8 @@ namespace mpm
             writer->write_grid_vtu(state.background,
                                    state.p2g,
                                    state.kinematics,
+                                   state.contact ? &state.contact->forces() :
+                                                   nullptr,
                                    state.current_time);
           });
       }
@@ -196,6 +198,9 @@ namespace mpm
       attempt("the particle csv file", [&]() {
         writer->write_particles_csv(state.particle_handler, state.current_time);
       });
+    if (out.write_csv && state.contact)
+      attempt("the contact csv file",
+              [&]() { writer->write_contact_csv(state.contact->forces()); });
     writer->advance();
     throw_if_any<RuntimeError>(comm,
                                "while writing output at step " +

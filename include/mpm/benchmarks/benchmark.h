@@ -3,6 +3,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <mpm/contact/nodal_contact_force.h>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -43,6 +45,21 @@ namespace mpm
       measure(dealii::Particles::ParticleHandler<dim> &particles,
               const double                             time,
               const MPI_Comm                           comm) const = 0;
+
+      /// Collective: the measures at @p time, given also the contact
+      /// forces of the last step at this rank's nodes (empty without
+      /// contact). What the simulator calls; benchmarks that measure the
+      /// contact forces override it, the others measure the particles.
+      virtual std::vector<double>
+      measure_with_contact(
+        dealii::Particles::ParticleHandler<dim> &particles,
+        const double                             time,
+        const MPI_Comm                           comm,
+        const contact::NodalContactForces<dim>  &contact_forces) const
+      {
+        (void)contact_forces;
+        return measure(particles, time, comm);
+      }
 
     private:
       std::vector<std::string> column_names;

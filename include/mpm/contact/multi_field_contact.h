@@ -4,6 +4,7 @@
 
 #include <mpm/contact/contact_law.h>
 #include <mpm/contact/contact_parameters.h>
+#include <mpm/contact/nodal_contact_force.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/parameters/parameters.h>
 #include <mpm/particles/body.h>
@@ -126,6 +127,20 @@ namespace mpm
         return contact_nodes;
       }
 
+      /**
+       * The contact forces of the last grid update, at the owned nodes
+       * where the law acted: the momentum the law gave the deformable
+       * field of the lowest number there, over the step
+       * (doc/theory/contact.md, "Contact forces"). Between two deformable
+       * fields that is the force between them, as the first one feels it;
+       * against a rigid field, the force on the deformable one.
+       */
+      const NodalContactForces<dim> &
+      forces() const
+      {
+        return nodal_forces;
+      }
+
       /// The sum of the fields into @p p2g (owned nodes) and their
       /// centre-of-mass velocity and increment into @p kinematics (ghosts
       /// updated): what one field would show in the output.
@@ -165,6 +180,7 @@ namespace mpm
       unsigned int               n = 0;
       std::vector<Field>         fields;
       unsigned long              contact_nodes = 0;
+      NodalContactForces<dim>    nodal_forces;
       /// per owned node, whether the grid update's resolve of this step
       /// acted (read by the re-map's)
       std::vector<char> in_contact;

@@ -94,6 +94,11 @@ namespace mpm
     std::vector<double>
     benchmark_values();
 
+    /// The contact forces of the last step at this rank's nodes (empty
+    /// without contact; MultiFieldContact::forces()).
+    const contact::NodalContactForces<dim> &
+    contact_forces() const;
+
     /// The integrator's statistics columns of the last step (an implicit
     /// step's iteration counts; empty for the explicit one), named by
     /// integrator_columns().
