@@ -49,6 +49,9 @@
 #                   gap check (doc/benchmarks/sliding_block.md)    5.5 min
 #   colliding_disks scripts/colliding_disks_study.sh + plot, contact
 #                   through an impact (doc/benchmarks/colliding_disks.md) 2 min
+#   hertz_contact   scripts/hertz_contact_study.sh + plot, a cylinder
+#                   pressed on a plane against Hertz, refined
+#                   (doc/benchmarks/hertz_contact.md)              30 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
 # Full suite: about 3 hours. QUICK=1 (coarse grids, short runs, few
@@ -63,7 +66,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect sliding_block colliding_disks recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect sliding_block colliding_disks hertz_contact recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -216,6 +219,16 @@ part_colliding_disks() {
     "$root/scripts/colliding_disks_study.sh" > "$res/colliding-disks.txt"
   else
     FIGURE=1 "$root/scripts/colliding_disks_study.sh" > "$res/colliding-disks.txt"
+  fi
+}
+
+part_hertz_contact() {
+  if [ "$quick" = 1 ]; then
+    LEVELS="1 2" PPDS=4 "$root/scripts/hertz_contact_study.sh" \
+      "$res/hertz-contact" > "$res/hertz-contact.txt"
+  else
+    FIGURE=1 "$root/scripts/hertz_contact_study.sh" "$res/hertz-contact" \
+      > "$res/hertz-contact.txt"
   fi
 }
 

@@ -43,7 +43,7 @@ main(int argc, char **argv)
   std::vector<std::array<double, 4>> nodes;
   for (const auto &part : dealii::Utilities::MPI::all_gather(comm, local))
     for (std::size_t i = 0; i + 3 < part.size(); i += 4)
-      nodes.push_back({part[i], part[i + 1], part[i + 2], part[i + 3]});
+      nodes.push_back({{part[i], part[i + 1], part[i + 2], part[i + 3]}});
   std::sort(nodes.begin(), nodes.end());
 
   double load = 0, largest = 0, off_plane = 0, pull = 0, tangential = 0;
