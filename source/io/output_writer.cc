@@ -14,6 +14,32 @@
 
 namespace mpm
 {
+  namespace
+  {
+    /// Rows of @p row values from every rank, gathered on rank 0 and
+    /// sorted by their first @p key values (empty on the other ranks).
+    struct GatheredRows
+    {
+      GatheredRows(const MPI_Comm             comm,
+                   const std::vector<double> &local,
+                   const unsigned int         row,
+                   const unsigned int         key)
+        : parts(dealii::Utilities::MPI::gather(comm, local, 0))
+      {
+        for (const auto &part : parts)
+          for (std::size_t i = 0; i < part.size(); i += row)
+            rows.push_back(part.data() + i);
+        std::sort(rows.begin(),
+                  rows.end(),
+                  [key](const double *a, const double *b) {
+                    return std::lexicographical_compare(a, a + key, b, b + key);
+                  });
+      }
+      std::vector<std::vector<double>> parts;
+      std::vector<const double *>      rows;
+    };
+  } // namespace
+
   using namespace dealii;
 
   template <int dim>
@@ -151,17 +177,10 @@ namespace mpm
         const auto prop = p.get_properties();
         local.insert(local.end(), prop.begin(), prop.end());
       }
-    const auto all = Utilities::MPI::gather(comm, local, 0);
+    const GatheredRows table(comm, local, row, 1);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-
-    std::vector<const double *> rows;
-    for (const auto &part : all)
-      for (std::size_t i = 0; i < part.size(); i += row)
-        rows.push_back(part.data() + i);
-    std::sort(rows.begin(), rows.end(), [](const double *a, const double *b) {
-      return a[0] < b[0];
-    });
+    const auto &rows = table.rows;
 
     std::ostringstream out;
     const char        *axis[3] = {"x", "y", "z"};
@@ -201,17 +220,10 @@ namespace mpm
         for (unsigned int d = 0; d < dim; ++d)
           local.push_back(f.force[d]);
       }
-    const auto all = Utilities::MPI::gather(comm, local, 0);
+    const GatheredRows table(comm, local, row, dim);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-
-    std::vector<const double *> rows;
-    for (const auto &part : all)
-      for (std::size_t i = 0; i < part.size(); i += row)
-        rows.push_back(part.data() + i);
-    std::sort(rows.begin(), rows.end(), [](const double *a, const double *b) {
-      return std::lexicographical_compare(a, a + dim, b, b + dim);
-    });
+    const auto &rows = table.rows;
 
     std::ostringstream out;
     const char        *axis[3] = {"x", "y", "z"};
