@@ -51,7 +51,7 @@
 #                   through an impact (doc/benchmarks/colliding_disks.md) 2 min
 #   hertz_contact   scripts/hertz_contact_study.sh + plot, a cylinder
 #                   pressed on a plane against Hertz, refined
-#                   (doc/benchmarks/hertz_contact.md)              30 min
+#                   (doc/benchmarks/hertz_contact.md)              35 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
 # Full suite: about 3 hours. QUICK=1 (coarse grids, short runs, few
