@@ -54,7 +54,7 @@
 #                   (doc/benchmarks/hertz_contact.md)              35 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
-# Full suite: about 3 hours. QUICK=1 (coarse grids, short runs, few
+# Full suite: about 4.5 hours. QUICK=1 (coarse grids, short runs, few
 # variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mpm
 {
@@ -97,8 +98,15 @@ namespace mpm
               load += F;
               first += F * x;
             }
+          // no contact (yet): nothing to compare, and no error to show
           if (!(load > 0))
-            return std::vector<double>(declaration.columns.size(), 0.);
+            {
+              std::vector<double> none(
+                declaration.columns.size(),
+                std::numeric_limits<double>::quiet_NaN());
+              none[0] = 0;
+              return none;
+            }
           const double centre = first / load;
           double       second = 0, largest = 0;
           for (const auto &[x, F] : nodes)
@@ -108,7 +116,8 @@ namespace mpm
             }
           second /= load;
           // the node spacing along the plane: the smallest gap between
-          // contact nodes (none with a single node)
+          // contact nodes, the grid's spacing where two of them are
+          // neighbours (none with a single node)
           double spacing = 0;
           for (std::size_t i = 1; i < nodes.size(); ++i)
             {

@@ -201,7 +201,8 @@ namespace mpm
                                     const double                  min_mass,
                                     const Phase                   phase,
                                     const double                  t,
-                                    const double                  t_old)
+                                    const double                  t_old,
+                                    const double                  kick)
     {
       using P                   = P2GLayout<dim>;
       using K                   = KinematicsLayout<dim>;
@@ -238,7 +239,6 @@ namespace mpm
           in_contact.assign(grid.n_owned_nodes(), 0);
           nodal_forces.clear();
         }
-      const double dt = t - t_old;
       for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
         {
           unsigned int count = 0;
@@ -348,8 +348,8 @@ namespace mpm
                     }
                 }
             }
-          if (with_increment && dt > 0)
-            nodal_forces.push_back({i, grid.node_position(i), impulse / dt});
+          if (with_increment && kick > 0)
+            nodal_forces.push_back({i, grid.node_position(i), impulse / kick});
         }
       if (with_increment)
         contact_nodes = active;

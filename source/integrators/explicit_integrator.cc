@@ -81,7 +81,7 @@ namespace mpm
       {
         particle_to_grid(P2GContent::mass_momentum);
         nodal_velocity_from_momentum();
-        resolve_contact(Phase::start_of_step, state.current_time);
+        resolve_contact(Phase::start_of_step, state.current_time, dt);
         update_stress(dt);
         // cpGIMP and CPDI take their domains from F, which the stress
         // update has just changed: the force pass and G2P see the new
@@ -94,19 +94,19 @@ namespace mpm
         particle_to_grid(new_domains ? P2GContent::mass_momentum_force :
                                        P2GContent::force);
         update_grid(kick);
-        resolve_contact(Phase::grid_update, t_new);
+        resolve_contact(Phase::grid_update, t_new, kick);
         grid_to_particle(dt);
       }
     else
       {
         particle_to_grid(P2GContent::mass_momentum_force);
         update_grid(kick);
-        resolve_contact(Phase::grid_update, t_new);
+        resolve_contact(Phase::grid_update, t_new, kick);
         grid_to_particle(dt);
         if (state.params.time.scheme == Scheme::musl)
           {
             remap_momentum();
-            resolve_contact(Phase::remap, t_new);
+            resolve_contact(Phase::remap, t_new, dt);
           }
         update_stress(dt);
       }
@@ -125,7 +125,7 @@ namespace mpm
   {
     particle_to_grid(transfer::P2GContent::mass_momentum);
     nodal_velocity_from_momentum();
-    resolve_contact(Phase::start_of_step, state.current_time);
+    resolve_contact(Phase::start_of_step, state.current_time, 0.);
     if (state.contact)
       state.contact->combine(state.background, state.p2g, state.kinematics);
   }
@@ -223,7 +223,9 @@ namespace mpm
 
   template <int dim>
   void
-  ExplicitIntegrator<dim>::resolve_contact(const Phase phase, const double t)
+  ExplicitIntegrator<dim>::resolve_contact(const Phase  phase,
+                                           const double t,
+                                           const double kick)
   {
     if (!state.contact)
       return;
@@ -233,7 +235,8 @@ namespace mpm
                                                     state.min_nodal_mass,
                                                     phase,
                                                     t,
-                                                    state.current_time));
+                                                    state.current_time,
+                                                    kick));
   }
 
   template <int dim>

@@ -230,7 +230,7 @@ namespace mpm
     for (unsigned int d = 0; d < dim; ++d)
       out << (d ? "," : "") << axis[d];
     for (unsigned int d = 0; d < dim; ++d)
-      out << ",f_" << axis[d];
+      out << ",contact_force_" << axis[d];
     out << '\n' << std::setprecision(10);
     for (const double *r : rows)
       {

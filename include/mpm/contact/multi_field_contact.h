@@ -108,8 +108,11 @@ namespace mpm
        * after @p phase, on owned nodes; ghosts updated. A rigid field's
        * velocity is its prescribed one at @p t (and in the grid update its
        * increment the prescribed change since @p t_old). Fields lighter
-       * than @p min_mass at a node do not take part. Returns an empty
-       * string or the first non-finite velocity.
+       * than @p min_mass at a node do not take part. @p kick: the time
+       * over which the grid update changed the momentum (the step, or
+       * half of it for the leapfrog start), which turns the grid update's
+       * corrections into forces(). Returns an empty string or the first
+       * non-finite velocity.
        */
       std::string
       resolve(const BackgroundGrid<dim>    &grid,
@@ -117,7 +120,8 @@ namespace mpm
               const double                  min_mass,
               const Phase                   phase,
               const double                  t,
-              const double                  t_old);
+              const double                  t_old,
+              const double                  kick);
 
       /// The nodes (owned by this rank) where the last grid update's
       /// resolve corrected a field.

@@ -75,9 +75,12 @@ namespace mpm
     update_positions();
 
     /// The contact phase: the fields' velocities at time @p t meet by the
-    /// contact law after @p phase (no-op with one field).
+    /// contact law after @p phase (no-op with one field); @p kick: the
+    /// grid update's time step, for the contact forces.
     void
-    resolve_contact(const contact::Phase phase, const double t);
+    resolve_contact(const contact::Phase phase,
+                    const double         t,
+                    const double         kick);
 
     /// The velocity fields: one without contact, whose vectors are the
     /// state's own.
