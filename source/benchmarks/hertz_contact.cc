@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <mpm/benchmarks/benchmark_registry.h>
+#include <mpm/contact/gather_contact_forces.h>
 #include <mpm/utilities/input_error.h>
 
 #include <algorithm>
@@ -79,18 +80,10 @@ namespace mpm
           const MPI_Comm                          comm,
           const contact::NodalContactForces<dim> &forces) const override
         {
-          // (x, F) of every contact node, on every rank
-          std::vector<double> local;
-          for (const auto &f : forces)
-            {
-              local.push_back(f.position[0]);
-              local.push_back(std::abs(f.force[dim - 1]));
-            }
+          // (x, F) of every contact node, on every rank, sorted by x
           std::vector<std::pair<double, double>> nodes;
-          for (const auto &part : Utilities::MPI::all_gather(comm, local))
-            for (std::size_t i = 0; i + 1 < part.size(); i += 2)
-              nodes.emplace_back(part[i], part[i + 1]);
-          std::sort(nodes.begin(), nodes.end());
+          for (const auto &f : contact::gather_contact_forces(forces, comm))
+            nodes.emplace_back(f.position[0], std::abs(f.force[dim - 1]));
 
           double load = 0, first = 0;
           for (const auto &[x, F] : nodes)

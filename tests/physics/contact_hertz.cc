@@ -5,6 +5,8 @@
 // are symmetric about the cylinder's axis; the half-width and the peak
 // pressure they give (Benchmark = hertz contact) are within 2% of
 // Hertz's a = sqrt(4 P R / (pi E*)) = 4 cells and p0 = 2 P / (pi a).
+#include <mpm/contact/gather_contact_forces.h>
+
 #include <algorithm>
 #include <array>
 
@@ -36,15 +38,10 @@ main(int argc, char **argv)
   const double weight = G * dealii::Utilities::MPI::sum(local_mass, comm);
 
   // (x, y, f_x, f_y) of every contact node, sorted by x
-  std::vector<double> local;
-  for (const auto &f : sim.contact_forces())
-    local.insert(local.end(),
-                 {f.position[0], f.position[1], f.force[0], f.force[1]});
   std::vector<std::array<double, 4>> nodes;
-  for (const auto &part : dealii::Utilities::MPI::all_gather(comm, local))
-    for (std::size_t i = 0; i + 3 < part.size(); i += 4)
-      nodes.push_back({{part[i], part[i + 1], part[i + 2], part[i + 3]}});
-  std::sort(nodes.begin(), nodes.end());
+  for (const auto &f :
+       mpm::contact::gather_contact_forces(sim.contact_forces(), comm))
+    nodes.push_back({{f.position[0], f.position[1], f.force[0], f.force[1]}});
 
   double load = 0, largest = 0, off_plane = 0, pull = 0, tangential = 0;
   for (const auto &n : nodes)
