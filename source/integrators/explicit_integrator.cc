@@ -17,11 +17,14 @@ namespace mpm
   void
   ExplicitIntegrator<dim>::initialize()
   {
-    using StepControl  = Parameters::TimeStepping::StepControl;
-    const auto &time   = state.params.time;
-    state.stable_dt    = ::mpm::stable_time_step(state.background,
-                                              state.particle_handler,
-                                              state.bodies);
+    using StepControl = Parameters::TimeStepping::StepControl;
+    const auto &time  = state.params.time;
+    // the caller's bound (particles that are still to enter) and the
+    // particles' own
+    state.stable_dt    = std::min(state.stable_dt,
+                               ::mpm::stable_time_step(state.background,
+                                                       state.particle_handler,
+                                                       state.bodies));
     state.stable_dt    = Utilities::MPI::min(state.stable_dt, state.comm);
     const double limit = state.stable_dt;
     if (time.step_control == StepControl::fixed && time.time_step > limit)

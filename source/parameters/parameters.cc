@@ -313,11 +313,12 @@ namespace mpm
       prm.declare_entry(
         "Geometry",
         "box",
-        Patterns::Selection("box|ball|quadrilateral|mesh file"),
+        Patterns::Selection("box|ball|quadrilateral|mesh file|none"),
         "The body mesh: box (Lower corner, Upper corner, Subdivisions), "
         "ball (Center, Radius, Refinements; a disk in 2D, a segment in 1D), "
         "quadrilateral (the subdivided unit box mapped bi/trilinearly onto "
-        "the Corners) or mesh file (Mesh file). Each body cell is split into "
+        "the Corners), mesh file (Mesh file), or none (no particles at the "
+        "start; needs an Inflow). Each body cell is split into "
         "n^dim sub-cells (n = Particles per direction), and each sub-cell "
         "becomes one particle. Every particle must lie inside the grid, "
         "and particles of one body must not lie inside another body "
@@ -480,6 +481,9 @@ namespace mpm
       prm.enter_subsection("Locking remedies");
       remedies::declare_parameters(prm);
       prm.leave_subsection();
+      prm.enter_subsection("Inflow");
+      InflowParameters<dim>::declare_parameters(prm);
+      prm.leave_subsection();
     }
 
     template <int dim>
@@ -490,6 +494,7 @@ namespace mpm
       geometry            = g == "box"           ? Geometry::box :
                             g == "ball"          ? Geometry::ball :
                             g == "quadrilateral" ? Geometry::quadrilateral :
+                            g == "none"          ? Geometry::none :
                                                    Geometry::mesh_file;
       lower = parse_point<dim>(prm.get("Lower corner"), "Lower corner");
       upper = parse_point<dim>(prm.get("Upper corner"), "Upper corner");
@@ -528,6 +533,15 @@ namespace mpm
       prm.enter_subsection("Locking remedies");
       locking_remedies = remedies::parse_selection(prm);
       prm.leave_subsection();
+      prm.enter_subsection("Inflow");
+      inflow.parse_parameters(prm);
+      prm.leave_subsection();
+      if (geometry == Geometry::none && !inflow.enabled)
+        throw InputError("Geometry = none gives the body no particles: it "
+                         "needs Inflow/Enabled = true");
+      if (inflow.enabled && !prescribed_velocity.empty())
+        throw InputError("Inflow/Enabled = true: a rigid body (Prescribed "
+                         "velocity) cannot have an inflow");
       if (geometry == Geometry::box)
         for (unsigned int d = 0; d < dim; ++d)
           if (!(upper[d] > lower[d]))

@@ -74,6 +74,8 @@ namespace mpm
         case G::mesh_file:
           read_mesh(mesh, prm.mesh_file, input_folder, where + "/Mesh file");
           break;
+        case G::none: // no cells: the inflow brings the particles
+          break;
       }
   }
 

@@ -34,6 +34,10 @@ namespace mpm
     const MappingQ1<dim>                                mapping;
     for (unsigned int b = 0; b < n; ++b)
       {
+        // a body without a mesh (its particles enter by an inflow)
+        // occupies no volume of its own
+        if (bodies[b].prm.geometry == Parameters::Body<dim>::Geometry::none)
+          continue;
         meshes[b] = std::make_unique<Triangulation<dim>>();
         create_body_mesh(*meshes[b],
                          bodies[b].prm,
@@ -53,7 +57,7 @@ namespace mpm
         const Point<dim>   x     = p.get_location();
         volume[j] += props[L::volume0];
         for (unsigned int i = 0; i < n; ++i)
-          if (i != j && boxes[i].point_inside(x))
+          if (i != j && meshes[i] && boxes[i].point_inside(x))
             {
               const auto found =
                 GridTools::find_active_cell_around_point(*locators[i], x);

@@ -29,6 +29,8 @@ namespace mpm
               reason = name + "/Body force varies (its work is not known)";
             else if (body.has_traction() && !body.traction.is_constant())
               reason = name + "/Traction varies (its work is not known)";
+            else if (body.prm.inflow.enabled)
+              reason = name + "/Inflow brings energy in with its particles";
           }
         // The mass metric's projection of a locked pressure has deviatoric
         // parts, which carry far more energy per unit of stress.

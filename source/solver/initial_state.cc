@@ -290,6 +290,8 @@ namespace mpm
     std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
     for (const auto &body : state.bodies)
       {
+        if (body.prm.geometry == Parameters::Body<dim>::Geometry::none)
+          continue;
         Triangulation<dim> mesh;
         create_body_mesh(mesh,
                          body.prm,
@@ -326,6 +328,8 @@ namespace mpm
     types::particle_index id_offset = 0;
     for (const auto &body : state.bodies)
       {
+        if (body.prm.geometry == Parameters::Body<dim>::Geometry::none)
+          continue;
         const std::string where =
           "Bodies/" + Parameters::body_section(body.index);
         Triangulation<dim> mesh;

@@ -1,6 +1,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <mpm/grid/mesh_reader.h>
+#include <mpm/particles/inflow.h>
 #include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/resource_estimate.h>
 #include <mpm/utilities/input_error.h>
@@ -154,11 +155,24 @@ namespace mpm
                                            where + "Mesh file");
               origin << where << "Mesh file = " << body.mesh_file;
               break;
+            case G::none:
+              break;
           }
-        origin << " and " << where
-               << "Particles per direction = " << body.particles_per_direction;
+        if (body.geometry != G::none)
+          origin << " and " << where << "Particles per direction = "
+                 << body.particles_per_direction;
+        // an inflow's particles over the whole run
+        const double inflowing = static_cast<double>(
+          Inflow<dim>::planned_particles(body.inflow,
+                                         parameters.time.end_time));
+        if (inflowing > 0)
+          origin << (body.geometry != G::none ? " and " : "") << where
+                 << "Inflow (" << inflowing
+                 << " particles from Radius, Speed, Particle spacing and End "
+                    "time or Volume)";
         const double particles =
-          cells * std::pow(double(body.particles_per_direction), dim);
+          cells * std::pow(double(body.particles_per_direction), dim) +
+          inflowing;
         e.body_cells += cells;
         e.particles += particles;
         if (particles > largest)
@@ -279,6 +293,10 @@ namespace mpm
           << (limit_is_parameter ? " a larger" : " set") << " Memory limit "
           << "(in GB) if the machines can hold it.";
       }
+    else if (e.particles > max_cells)
+      s << "the bodies give " << e.particles << " particles, more than the "
+        << max_cells << " a 32-bit particle id can number; the most from "
+        << e.largest_body << ".";
     if (!s.str().empty())
       throw InputError(s.str());
   }

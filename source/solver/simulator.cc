@@ -11,6 +11,7 @@
 #include <mpm/utilities/wall_clock.h>
 
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 namespace mpm
@@ -69,6 +70,7 @@ namespace mpm
           state.balancer->repartition(params.boundary);
       }
     setup_balance[1] = LoadBalancer<dim>::balance(state.particle_handler, comm);
+    create_inflows();
     state.stress_filter =
       std::make_unique<remedies::StressFilter<dim>>(state.bodies);
     state.force_pass_hooks = remedies::create_force_pass_hooks(state.bodies);
@@ -102,9 +104,21 @@ namespace mpm
         return;
       }
     // Nodes lighter than this carry no velocity (a relative threshold:
-    // far below any real nodal mass, far above round-off).
-    const auto s         = statistics();
-    state.min_nodal_mass = 1e-12 * s.mass / std::max<double>(1, s.n_particles);
+    // far below any real nodal mass, far above round-off); a run that
+    // starts empty takes it from the particles its inlets will create.
+    inject_particles();
+    const auto s = statistics();
+    double     m = s.mass / std::max<double>(1, s.n_particles);
+    for (const auto &in : inflows)
+      if (s.n_particles == 0)
+        m = std::max(m,
+                     in.particle_volume() *
+                       state.bodies[in.body()].material->reference_density());
+    state.min_nodal_mass = 1e-12 * m;
+    // The inlets' particles bound the step before they exist; the
+    // integrator's checks of the first step see that bound.
+    state.stable_dt = std::numeric_limits<double>::max();
+    bound_step_by_inflows();
     integrator->initialize();
   }
 
@@ -162,6 +176,9 @@ namespace mpm
     integrator->advance(dt);
     state.current_time += dt;
     ++state.current_step;
+    // the state at time t holds every inflow layer that has entered by t
+    inject_particles();
+    bound_step_by_inflows();
     check_errors();
   }
 
@@ -175,6 +192,7 @@ namespace mpm
     // only re-sized; the particles carry the whole state.
     state.balancer->repartition(params.boundary);
     state.initialize_nodal_vectors();
+    inlet_locator.reset(); // the owned cells have changed
   }
 
   template <int dim>

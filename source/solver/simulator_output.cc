@@ -88,6 +88,8 @@ namespace mpm
             // the integrator's columns (its solver's iterations), then the
             // benchmark's measures
             auto columns = integrator->statistics_columns();
+            if (!inflows.empty())
+              columns.push_back("injected_mass");
             if (benchmark)
               for (const auto &c : benchmark->columns())
                 columns.push_back(c);
@@ -174,6 +176,8 @@ namespace mpm
     };
     attempt("statistics.txt", [&]() {
       auto values = integrator->statistics_values();
+      if (!inflows.empty())
+        values.push_back(injected_mass());
       values.insert(values.end(), extra.begin(), extra.end());
       statistics_file->write_row(
         state.current_time, state.current_step, state.last_dt, stats, values);
@@ -214,8 +218,11 @@ namespace mpm
         s << std::scientific << std::setprecision(6) << "t "
           << state.current_time << " step " << state.current_step << " n "
           << stats.n_particles << " mass " << stats.mass << " removed "
-          << stats.removed_mass << " Ekin " << stats.kinetic_energy
-          << " Estrain " << stats.strain_energy;
+          << stats.removed_mass;
+        if (!inflows.empty())
+          s << " injected " << injected_mass();
+        s << " Ekin " << stats.kinetic_energy << " Estrain "
+          << stats.strain_energy;
         for (unsigned int d = 0; d < dim; ++d)
           s << " p" << d << ' ' << stats.momentum[d];
         if (dim >= 2)
@@ -275,10 +282,20 @@ namespace mpm
                                                 " (general Q1)")
           << '\n';
     for (const auto &b : state.bodies)
-      pcout << "  body " << b.index << ": " << b.material->name()
-            << ", rho0 = " << b.material->reference_density() << ", "
-            << b.prm.particles_per_direction << "^" << dim
-            << " particles per body cell\n";
+      {
+        pcout << "  body " << b.index << ": " << b.material->name()
+              << ", rho0 = " << b.material->reference_density();
+        if (b.prm.geometry != Parameters::Body<dim>::Geometry::none)
+          pcout << ", " << b.prm.particles_per_direction << "^" << dim
+                << " particles per body cell";
+        pcout << '\n';
+      }
+    for (const auto &in : inflows)
+      pcout << "  inflow of body " << in.body() << ": " << in.n_per_layer()
+            << " particles per layer, " << in.n_layers() << " layers ("
+            << in.n_particles() << " particles, "
+            << in.n_particles() * in.particle_volume()
+            << " of volume) by the end time\n";
     pcout << "  particles: " << state.particle_handler.n_global_particles()
           << '\n'
           << "  integrator " << integrator->name();

@@ -8,6 +8,7 @@
 #include <mpm/grid/grid_parameters.h>
 #include <mpm/integrators/implicit_parameters.h>
 #include <mpm/materials/material.h>
+#include <mpm/particles/inflow_parameters.h>
 #include <mpm/remedies/selection.h>
 #include <mpm/shape_functions/family.h>
 
@@ -101,7 +102,8 @@ namespace mpm
         box,
         ball,
         quadrilateral, ///< the subdivided unit box mapped onto 2^dim corners
-        mesh_file
+        mesh_file,
+        none ///< no particles at the start (an Inflow brings them)
       };
       Geometry                        geometry = Geometry::box;
       dealii::Point<dim>              lower, upper;
@@ -132,6 +134,8 @@ namespace mpm
       /// The locking remedies of this body, with their settings
       /// (subsection Locking remedies; remedies/registry.h).
       remedies::Selection locking_remedies;
+      /// The inlet that adds particles of the body (subsection Inflow).
+      InflowParameters<dim> inflow;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

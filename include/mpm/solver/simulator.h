@@ -11,6 +11,7 @@
 #include <mpm/io/checkpoint.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/io/statistics.h>
+#include <mpm/particles/inflow.h>
 #include <mpm/solver/energy_watch.h>
 #include <mpm/solver/simulation_state.h>
 
@@ -89,6 +90,11 @@ namespace mpm
     /// (output does this before writing). Collective-free.
     void
     filter_stress();
+
+    /// The mass that the bodies' inflows have let in so far (the same on
+    /// every rank).
+    double
+    injected_mass() const;
 
     /// Benchmark error columns of the current state (empty if none).
     std::vector<double>
@@ -199,6 +205,20 @@ namespace mpm
     void
     create_initial_state(const bool balance_now);
 
+    // Inflow (particle_injection.cc).
+    /// The bodies' inlets, checked against the grid; the layers the
+    /// current state already holds. Collective.
+    void
+    create_inflows();
+    /// Add the layers that have crossed the inlets by the current time,
+    /// each particle on the rank that owns its cell. Collective.
+    void
+    inject_particles();
+    /// Bound the stable step by the entering particles' while an inlet
+    /// is still to create some (they are not in the last stress update).
+    void
+    bound_step_by_inflows();
+
     // Checkpoint and restart (checkpoint_restart.cc).
     /// The checkpoint folder to resume from, or "" to start anew.
     std::string
@@ -251,6 +271,14 @@ namespace mpm
     std::unique_ptr<benchmarks::Benchmark<dim>> benchmark;
     std::unique_ptr<EnergyWatch<dim>>           energy_watch;
     std::array<ParticleBalance, 2>              setup_balance;
+
+    std::vector<Inflow<dim>>        inflows;
+    std::vector<unsigned long long> inflow_layers_done;
+    /// Stable step of the particles entering at each inlet.
+    std::vector<double> inflow_stable_dt;
+    /// Owned cells of the current partition, for the entering particles.
+    std::unique_ptr<typename BackgroundGrid<dim>::OwnedCellLocator>
+      inlet_locator;
 
     std::unique_ptr<OutputWriter<dim>>   writer;
     std::unique_ptr<StatisticsFile<dim>> statistics_file;
