@@ -8,6 +8,7 @@ packages=(
   openmpi-bin libopenmpi-dev
   python3 python3-numpy python3-matplotlib python3-pandas
   python3-sphinx python3-myst-parser
+  gmsh
 )
 missing=()
 for p in "${packages[@]}"; do
