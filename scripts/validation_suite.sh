@@ -52,9 +52,12 @@
 #   hertz_contact   scripts/hertz_contact_study.sh + plot, a cylinder
 #                   pressed on a plane against Hertz, refined
 #                   (doc/benchmarks/hertz_contact.md)              35 min
+#   glass_pour      scripts/glass_pour_study.sh + figures, water poured
+#                   into a glass, 2D and 3D, standard and both remedies
+#                   (doc/benchmarks/glass_pour.md)                 15 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
-# Full suite: about 4.5 hours. QUICK=1 (coarse grids, short runs, few
+# Full suite: about 4.8 hours. QUICK=1 (coarse grids, short runs, few
 # variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.
@@ -66,7 +69,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect sliding_block colliding_disks hertz_contact recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect sliding_block colliding_disks hertz_contact glass_pour recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -229,6 +232,16 @@ part_hertz_contact() {
   else
     FIGURE=1 "$root/scripts/hertz_contact_study.sh" "$res/hertz-contact" \
       > "$res/hertz-contact.txt"
+  fi
+}
+
+part_glass_pour() {
+  if [ "$quick" = 1 ]; then
+    DIMS=2 "$root/scripts/glass_pour_study.sh" "$res/glass-pour" \
+      > "$res/glass-pour.txt"
+  else
+    FIGURE=1 "$root/scripts/glass_pour_study.sh" "$res/glass-pour" \
+      > "$res/glass-pour.txt"
   fi
 }
 
