@@ -101,6 +101,7 @@ def measures(run):
         "p_error": p_bottom / hydrostatic - 1,
         "checkerboard": np.sqrt(np.mean(np.square(jumps))) / (RHO * G * depth),
         "surface": (top.max() - top.min()) / h,
+        "fill": np.mean([len(cells[k]) for k in bottom]) / 2**dim,
         "max_speed": speed.max(),
     }
 
@@ -109,8 +110,8 @@ def main(runs):
     print("| run | t [s] | injected [kg] | mass + removed - injected | removed "
           "| depth [mm] | level from volume [mm] | level from injected [mm] "
           "| bottom p [Pa] | vs rho g (depth - y) | checkerboard "
-          "| surface spread [cells] | max speed [m/s] |")
-    print("|" + "---|" * 13)
+          "| surface spread [cells] | bottom fill | max speed [m/s] |")
+    print("|" + "---|" * 14)
     for run in runs:
         m = measures(run)
         print(f"| {os.path.basename(m['run'])} | {m['t']:.2f} "
@@ -119,7 +120,8 @@ def main(runs):
               f"| {1e3 * m['level_volume']:.1f} "
               f"| {1e3 * m['level_injected']:.1f} | {m['p_bottom']:.0f} "
               f"| {100 * m['p_error']:+.1f}% | {m['checkerboard']:.3f} "
-              f"| {m['surface']:.1f} | {m['max_speed']:.3f} |")
+              f"| {m['surface']:.1f} | {m['fill']:.2f} "
+              f"| {m['max_speed']:.3f} |")
 
 
 if __name__ == "__main__":

@@ -7,7 +7,7 @@
 # in RESULTS/DIM/VARIANT (default results/glass_pour). With FIGURE=1 also
 # draws doc/figures/glass_pour_2d.png (pressure snapshots, standard beside
 # the remedies), doc/figures/glass_pour_3d.png (the 3D pour and the
-# settled water) and results/.../glass_pour_3d.gif (the 3D pour).
+# settled water) and doc/figures/glass_pour_3d.gif (the 3D pour).
 # Usage: scripts/glass_pour_study.sh [RESULTS]
 #        (MPM=..., RANKS=n, DIMS="2 3", VARIANTS="standard cell node",
 #         FIGURE=1; about 2 min for 2D, 10 min per 3D variant on 2 cores)
@@ -57,7 +57,7 @@ PRM
       $py "$root/scripts/plot_glass_pour.py" snapshots \
           "$root/doc/figures/glass_pour_3d.png" 0.3,0.8,2.5 "${runs[0]}"
       $py "$root/scripts/plot_glass_pour.py" animation \
-          "$dir/glass_pour_3d.gif" "${runs[0]}"
+          "$root/doc/figures/glass_pour_3d.gif" "${runs[0]}"
     fi
   fi
 done
