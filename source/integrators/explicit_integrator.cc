@@ -5,6 +5,7 @@
 #include <mpm/transfer/grid_to_particle.h>
 #include <mpm/utilities/input_error.h>
 
+#include <algorithm>
 #include <limits>
 #include <sstream>
 
@@ -32,7 +33,15 @@ namespace mpm
         std::ostringstream msg;
         msg << "Time stepping/Time step = " << time.time_step
             << " exceeds the stability limit min_p h/(c_p + |v_p|) = " << limit
-            << " of the initial state; choose at most that, or "
+            << " of the initial state"
+            << (std::any_of(state.bodies.begin(),
+                            state.bodies.end(),
+                            [](const auto &b) {
+                              return b.prm.inflow.enabled;
+                            }) ?
+                  " and of the particles the inlets will create" :
+                  "")
+            << "; choose at most that, or "
             << "Time step control = CFL";
         throw InputError(msg.str());
       }
