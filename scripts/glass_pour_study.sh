@@ -10,7 +10,7 @@
 # settled water) and doc/figures/glass_pour_3d.gif (the 3D pour).
 # Usage: scripts/glass_pour_study.sh [RESULTS]
 #        (MPM=..., RANKS=n, DIMS="2 3", VARIANTS="standard cell node",
-#         FIGURE=1; about 2 min for 2D, 10 min per 3D variant on 2 cores)
+#         FIGURE=1; about 2 min for 2D, 1.5 min per 3D variant on 2 cores)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=${MPM:-$root/build/mpm}

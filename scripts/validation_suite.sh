@@ -54,10 +54,10 @@
 #                   (doc/benchmarks/hertz_contact.md)              35 min
 #   glass_pour      scripts/glass_pour_study.sh + figures, water poured
 #                   into a glass, 2D and 3D, standard and both remedies
-#                   (doc/benchmarks/glass_pour.md)                 15 min
+#                   (doc/benchmarks/glass_pour.md)                  7 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
-# Full suite: about 4.8 hours. QUICK=1 (coarse grids, short runs, few
+# Full suite: about 4.6 hours. QUICK=1 (coarse grids, short runs, few
 # variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.
