@@ -2,6 +2,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/particles/data_out.h>
 
+#include <mpm/contact/gather_contact_forces.h>
 #include <mpm/grid/grid_update.h>
 #include <mpm/io/output_writer.h>
 #include <mpm/transfer/particle_to_grid.h>
@@ -211,16 +212,10 @@ namespace mpm
   {
     // Rows of (x, f), gathered on rank 0 and sorted by position.
     constexpr unsigned int row = 2 * dim;
-    std::vector<double>    local;
-    local.reserve(forces.size() * row);
-    for (const auto &f : forces)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          local.push_back(f.position[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          local.push_back(f.force[d]);
-      }
-    const GatheredRows table(comm, local, row, dim);
+    const GatheredRows     table(comm,
+                             contact::contact_force_rows(forces),
+                             row,
+                             dim);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     const auto &rows = table.rows;

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <mpm/solver/resource_estimate.h>
 #include <mpm/solver/simulator.h>
 #include <mpm/utilities/input_error.h>
 
@@ -19,23 +20,16 @@ namespace mpm
   void
   Simulator<dim>::create_inflows()
   {
-    using G = typename Parameters::Body<dim>::Geometry;
     inflows.clear();
-    // The inlets' ids follow those of the bodies' meshes (numbered at
-    // set-up: cells times particles per cell).
+    // The inlets' ids follow those the bodies' meshes gave at set-up
+    // (cells times particles per cell), counted without building them.
     unsigned long long first_id = 0;
     for (const auto &body : state.bodies)
-      if (body.prm.geometry != G::none)
-        {
-          Triangulation<dim> mesh;
-          create_body_mesh(mesh,
-                           body.prm,
-                           input_folder,
-                           "Bodies/" + Parameters::body_section(body.index));
-          first_id +=
-            static_cast<unsigned long long>(mesh.n_active_cells()) *
-            Utilities::fixed_power<dim>(body.prm.particles_per_direction);
-        }
+      first_id += static_cast<unsigned long long>(body_mesh_cells(
+                    body.prm,
+                    input_folder,
+                    "Bodies/" + Parameters::body_section(body.index) + "/")) *
+                  Utilities::fixed_power<dim>(body.prm.particles_per_direction);
     for (const auto &body : state.bodies)
       if (body.prm.inflow.enabled)
         inflows.emplace_back(body.prm.inflow,

@@ -61,6 +61,44 @@ namespace mpm
 
   } // namespace
 
+  template <int dim>
+  double
+  body_mesh_cells(const Parameters::Body<dim> &body,
+                  const std::string           &input_folder,
+                  const std::string           &where,
+                  std::ostringstream          *entries)
+  {
+    using G                   = typename Parameters::Body<dim>::Geometry;
+    double              cells = 0;
+    std::ostringstream  unused;
+    std::ostringstream &origin = entries ? *entries : unused;
+    switch (body.geometry)
+      {
+        case G::box:
+        case G::quadrilateral:
+          cells = product(body.subdivisions);
+          origin << where << "Subdivisions = " << list(body.subdivisions);
+          break;
+        case G::ball:
+          // the coarse ball: 2 segments in 1D, 12 cells in 2D, 32 in 3D
+          cells = (dim == 1 ? 2 :
+                   dim == 2 ? 12 :
+                              32) *
+                  std::pow(2., double(dim) * body.refinements);
+          origin << where << "Refinements = " << body.refinements;
+          break;
+        case G::mesh_file:
+          cells = mesh_file_cells<dim>(body.mesh_file,
+                                       input_folder,
+                                       where + "Mesh file");
+          origin << where << "Mesh file = " << body.mesh_file;
+          break;
+        case G::none:
+          break;
+      }
+    return cells;
+  }
+
   std::string
   gigabytes(const double bytes)
   {
@@ -132,32 +170,9 @@ namespace mpm
         const auto       &body  = parameters.bodies[b];
         const std::string where = "Bodies/" + Parameters::body_section(b) + "/";
         using G                 = typename Parameters::Body<dim>::Geometry;
-        double             cells = 0;
         std::ostringstream origin;
-        switch (body.geometry)
-          {
-            case G::box:
-            case G::quadrilateral:
-              cells = product(body.subdivisions);
-              origin << where << "Subdivisions = " << list(body.subdivisions);
-              break;
-            case G::ball:
-              // the coarse ball: 2 segments in 1D, 12 cells in 2D, 32 in 3D
-              cells = (dim == 1 ? 2 :
-                       dim == 2 ? 12 :
-                                  32) *
-                      std::pow(2., double(dim) * body.refinements);
-              origin << where << "Refinements = " << body.refinements;
-              break;
-            case G::mesh_file:
-              cells = mesh_file_cells<dim>(body.mesh_file,
-                                           input_folder,
-                                           where + "Mesh file");
-              origin << where << "Mesh file = " << body.mesh_file;
-              break;
-            case G::none:
-              break;
-          }
+        const double       cells =
+          body_mesh_cells(body, input_folder, where, &origin);
         if (body.geometry != G::none)
           origin << " and " << where << "Particles per direction = "
                  << body.particles_per_direction;
@@ -300,6 +315,22 @@ namespace mpm
     if (!s.str().empty())
       throw InputError(s.str());
   }
+
+  template double
+  body_mesh_cells<1>(const Parameters::Body<1> &,
+                     const std::string &,
+                     const std::string &,
+                     std::ostringstream *);
+  template double
+  body_mesh_cells<2>(const Parameters::Body<2> &,
+                     const std::string &,
+                     const std::string &,
+                     std::ostringstream *);
+  template double
+  body_mesh_cells<3>(const Parameters::Body<3> &,
+                     const std::string &,
+                     const std::string &,
+                     std::ostringstream *);
 
   template ResourceEstimate
   estimate_resources<1>(const Parameters::AllParameters<1> &,

@@ -103,7 +103,7 @@ BOOST_AUTO_TEST_CASE(layer_count)
   BOOST_TEST(in.layers_at(0.3) == 40u);
   // until the run's end: (1 - 0.1) * 2 / 0.01 = 180 layers
   BOOST_TEST(in.n_layers() == 180u);
-  BOOST_TEST(!in.pending_after(1.0));
+  BOOST_TEST(in.layers_at(1.0) == in.n_layers());
   p.end_time = 0.3;
   BOOST_TEST(mpm::Inflow<2>(p, 0, 1.0, "").n_layers() == 40u);
   p.volume = 0.1 * 0.01 * 25; // 25 layers of A s

@@ -88,12 +88,6 @@ namespace mpm
     /// Layers whose centre has crossed the inlet by time @p t.
     unsigned long long
     layers_at(const double t) const;
-    /// Whether layers remain to be created after time @p t.
-    bool
-    pending_after(const double t) const
-    {
-      return layers_at(t) < n_total_layers;
-    }
 
     /// The seeds (position at time @p t, volume, domain, corners) and ids
     /// of layer @p k, appended.

@@ -4,6 +4,7 @@
 
 #include <mpm/parameters/parameters.h>
 
+#include <sstream>
 #include <string>
 
 /**
@@ -36,6 +37,18 @@ namespace mpm
   /// "1.2 GB", "0.016 GB"
   std::string
   gigabytes(const double bytes);
+
+  /// The cells of a body's mesh from its parameters (a mesh file is read,
+  /// nothing is refined or built); 0 for Geometry = none. The body starts
+  /// with that many times Particles per direction^dim particles.
+  /// @p where: "Bodies/Body 0/"; @p entries, if given, receives the
+  /// entries that set the count ("Bodies/Body 0/Subdivisions = 4, 4").
+  template <int dim>
+  double
+  body_mesh_cells(const Parameters::Body<dim> &body,
+                  const std::string           &input_folder,
+                  const std::string           &where,
+                  std::ostringstream          *entries = nullptr);
 
   /// Count cells and particles and bound the memory of a case run on
   /// @p n_ranks ranks. Body and grid mesh files are read (not refined).
