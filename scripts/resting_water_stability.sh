@@ -9,17 +9,19 @@
 # end, and the particles' top over the level their volume gives (1 when
 # the water fills its volume; below 1 when its particles crowd).
 # Usage: scripts/resting_water_stability.sh [RESULTS]
-#        (MPM=..., VARIANTS="none cell node", CFLS="0.5 0.25 0.1", END=3)
+#        (MPM=..., VARIANTS="none cell node", FLIPS="0.95 1",
+#         CFLS="0.5 0.25 0.1", END=3; about 1 minute)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=${MPM:-$root/build/mpm}
 results=${1:-$root/results/resting_water}
 mkdir -p "$results"
-echo "| smoothing | CFL | growth rate of momentum_x [1/s] | max speed at the end [m/s] | top / volume level |"
-echo "|---|---|---|---|---|"
+echo "| smoothing | FLIP fraction | CFL | growth rate of momentum_x [1/s] | max speed at the end [m/s] | top / volume level |"
+echo "|---|---|---|---|---|---|"
 for variant in ${VARIANTS:-none cell node}; do
+ for flip in ${FLIPS:-0.95 1}; do
   for cfl in ${CFLS:-0.5 0.25 0.1}; do
-    name="${variant}_cfl${cfl}"
+    name="${variant}_flip${flip}_cfl${cfl}"
     cat > "$results/$name.prm" <<PRM
 set Dimension = 2
 set Constants = g=9.81, rho=1000, depth=0.06
@@ -30,7 +32,7 @@ end
 subsection Time stepping
   set End time = ${END:-3}
   set CFL number = $cfl
-  set FLIP fraction = 0.95
+  set FLIP fraction = $flip
 end
 subsection Boundary conditions
   set Slip boundary ids = 0, 1, 2, 3
@@ -64,10 +66,10 @@ subsection Bodies
 end
 PRM
     "$mpm" "$results/$name.prm" > "$results/$name.log"
-    /usr/bin/python3 - "$results/$name" "$variant" "$cfl" <<'PY'
+    /usr/bin/python3 - "$results/$name" "$variant" "$flip" "$cfl" <<'PY'
 import glob, sys
 import numpy as np
-run, variant, cfl = sys.argv[1:]
+run, variant, flip, cfl = sys.argv[1:]
 with open(run + "/statistics.txt") as f:
     names = f.readline().split()
 rows = np.loadtxt(run + "/statistics.txt", skiprows=1)
@@ -79,7 +81,8 @@ d = np.genfromtxt(sorted(glob.glob(run + "/particles-*.csv"))[-1],
                   delimiter=",", names=True)
 speed = np.sqrt(d["v_x"] ** 2 + d["v_y"] ** 2).max()
 top = np.percentile(d["y"] + np.sqrt(d["volume"]) / 2, 99)
-print(f"| {variant} | {cfl} | {rate} | {speed:.2g} | {top / (d['volume'].sum() / 0.2):.2f} |")
+print(f"| {variant} | {flip} | {cfl} | {rate} | {speed:.2g} | {top / (d['volume'].sum() / 0.2):.2f} |")
 PY
   done
+ done
 done

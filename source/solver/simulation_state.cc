@@ -66,14 +66,17 @@ namespace mpm
                                                const FieldSelection &only)
   {
     dealii::TimerOutput::Scope t(timer, "stress update");
-    const auto                 r = ::mpm::update_stress(background,
-                                        particle_handler,
-                                        bodies,
-                                        velocities,
-                                        dt,
-                                        &volume_sums,
-                                        domain_functions.get(),
-                                        only);
+    const auto                 r = ::mpm::update_stress(
+      background,
+      particle_handler,
+      bodies,
+      velocities,
+      dt,
+      &volume_sums,
+      domain_functions.get(),
+      only,
+      params.time.integrator ==
+        Parameters::TimeStepping::Integrator::explicit_dynamics);
     local_error.record(r.error);
     return r.stable_time_step;
   }

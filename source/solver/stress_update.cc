@@ -1,6 +1,7 @@
 #include <mpm/grid/grid_update.h>
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/cell_pressure_force.h>
 #include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/shape_functions/domain_shape_functions.h>
 #include <mpm/solver/stress_update.h>
@@ -42,7 +43,8 @@ namespace mpm
                 const double                     dt,
                 NodalVector                     *volume_scratch,
                 const shape_functions::DomainShapeFunctions<dim> *domains,
-                const FieldSelection                             &only)
+                const FieldSelection                             &only,
+                const bool pressure_over_cell)
   {
     using L                       = ParticleLayout<dim>;
     constexpr unsigned int     nv = shape_functions::n_q1<dim>;
@@ -219,11 +221,25 @@ namespace mpm
       const double        h          = grid.cell_height(cell);
       if (smoothing.any())
         {
+          typename remedies::VolumetricSmoothing<dim>::CellRate cell_rate;
+          const bool                                            over_cell =
+            pressure_over_cell && smoothing.any_pressure_over_cell();
+          if (over_cell)
+            {
+              cell_rate.mean_grad_v = remedies::cell_mean_velocity_gradient(
+                geo,
+                nodes,
+                in,
+                KinematicsLayout<dim>::n_components,
+                KinematicsLayout<dim>::velocity);
+              cell_rate.dt = dt;
+            }
           smoothing.update_cell(
             pic,
             nodes,
             N,
             node_sums,
+            over_cell ? &cell_rate : nullptr,
             [&](const auto        &p,
                 const unsigned int ordinal,
                 const double      *prop,
@@ -349,7 +365,8 @@ namespace mpm
     double,                                                            \
     NodalVector *,                                                     \
     const shape_functions::DomainShapeFunctions<d> *,                  \
-    const FieldSelection &);                                           \
+    const FieldSelection &,                                            \
+    bool);                                                             \
   template std::pair<double, std::string> limiting_particle<d>(        \
     const BackgroundGrid<d> &,                                         \
     Particles::ParticleHandler<d> &,                                   \

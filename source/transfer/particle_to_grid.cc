@@ -1,5 +1,6 @@
 #include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
+#include <mpm/remedies/cell_pressure_force.h>
 #include <mpm/remedies/stress_filter.h>
 #include <mpm/shape_functions/family_registry.h>
 #include <mpm/transfer/integrated_field_force.h>
@@ -53,12 +54,17 @@ namespace mpm
         double *const out = c.nodal.begin();
         std::string   error;
         Weights       weights(c.grid, c.domains);
+        // a fluid's cell pressure acts over its cell
+        remedies::CellPressureForce<dim> cell_pressure(c.bodies);
+        const bool over_cell = do_force && cell_pressure.any();
 
         weights.begin_pass(c.particles.n_locally_owned_particles());
         for_each_cell_with_particles(
           c.grid, c.particles, [&](const auto &cell, const auto &pic) {
             stresses.begin_cell(cell, pic);
             weights.begin_cell(cell);
+            if (over_cell)
+              cell_pressure.begin_cell(c.grid.geometry(cell));
             Sum sum(out, P::n_components);
             for (const auto &p : pic)
               {
@@ -77,6 +83,8 @@ namespace mpm
                       static_cast<unsigned int>(prop[L::body]);
                     const Body<dim> &body = c.bodies[b];
                     sigma = stresses.weighted_stress(p, prop, b);
+                    if (over_cell)
+                      cell_pressure.take_pressure(b, sigma);
                     body.body_force_on(p.get_location(),
                                        prop + L::X,
                                        m,
@@ -168,6 +176,11 @@ namespace mpm
               }
             stresses.finish_cell(cell, pic, sum, weights);
             sum.finish(weights, first, last);
+            if (over_cell)
+              cell_pressure.add_to_nodes(c.grid.nodes(cell),
+                                         out,
+                                         P::n_components,
+                                         P::force);
           });
         weights.end_pass(error.empty());
         c.nodal.compress(VectorOperation::add);

@@ -85,6 +85,21 @@ namespace mpm
         return any_node;
       }
 
+      /**
+       * Whether @p body's cell pressure acts over the cell in the explicit
+       * step (CellPressureForce): a cell average of a model whose state is
+       * J alone (the fluid), without the assumed-stress filter.
+       */
+      static bool
+      pressure_over_cell(const Body<dim> &body);
+
+      /// Whether some body's cell pressure acts over the cell.
+      bool
+      any_pressure_over_cell() const
+      {
+        return any_over_cell;
+      }
+
       /// The average of the body with index @p b.
       VolumeAverage
       average(const unsigned int b) const
@@ -115,9 +130,21 @@ namespace mpm
           }
       }
 
+      /// The cell's exact mean velocity gradient (cell_mean_velocity_gradient)
+      /// and the step, for the bodies whose pressure acts over the cell.
+      struct CellRate
+      {
+        dealii::Tensor<2, dim> mean_grad_v;
+        double                 dt = 0;
+      };
+
       /**
        * Update the particles @p pic of one cell (nodes @p nodes; the node
-       * average's sums @p node_sums, null without one):
+       * average's sums @p node_sums, null without one; @p cell_rate, null
+       * unless the pressure of some body acts over the cell: their volume
+       * change is then the cell's, J_bar = sum V_old det(I + dt <grad v>) /
+       * sum V0 and theta_bar = tr <grad v>, whose power is that of
+       * CellPressureForce's force):
        * `kinematics(p, ordinal, prop, grad_v, F)` gives a particle's
        * velocity gradient and new F (false for a bad particle; it fills
        * @p N, the Q1 values at the particle, for the node average);
@@ -130,6 +157,7 @@ namespace mpm
                   const unsigned int *nodes,
                   const double       *N,
                   const double       *node_sums,
+                  const CellRate     *cell_rate,
                   Kinematics        &&kinematics,
                   Update            &&update);
 
@@ -148,8 +176,8 @@ namespace mpm
       }
 
       std::vector<VolumeAverage> averages; ///< per body
-      std::vector<char>          keeps_volume;
-      bool                       any_cell = false, any_node = false;
+      std::vector<char>          keeps_volume, over_cell;
+      bool any_cell = false, any_node = false, any_over_cell = false;
 
       /// Per-body sums of one cell for the cell average.
       struct CellSums
@@ -173,6 +201,7 @@ namespace mpm
                                           const unsigned int *nodes,
                                           const double       *N,
                                           const double       *node_sums,
+                                          const CellRate     *cell_rate,
                                           Kinematics        &&kinematics,
                                           Update            &&update)
     {
@@ -245,13 +274,28 @@ namespace mpm
           double *prop = p.get_properties().data();
           if (averages[body_of(prop)] != VolumeAverage::cell)
             continue;
-          auto &[grad_v, F] = buffer[k++];
-          const auto  &sum  = cell_sums[body_of(prop)];
-          const double J    = determinant(F);
+          auto &[grad_v, F]      = buffer[k++];
+          const unsigned int b   = body_of(prop);
+          const auto        &sum = cell_sums[b];
+          const double       J   = determinant(F);
           if (J > 0)
             {
-              smooth_volume_change<dim>(
-                grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);
+              if (cell_rate && over_cell[b])
+                {
+                  const auto            &L_c  = cell_rate->mean_grad_v;
+                  dealii::Tensor<2, dim> step = cell_rate->dt * L_c;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    step[d][d] += 1;
+                  smooth_volume_change<dim>(grad_v,
+                                            F,
+                                            J,
+                                            sum.V_old * determinant(step) /
+                                              sum.V0,
+                                            trace(L_c));
+                }
+              else
+                smooth_volume_change<dim>(
+                  grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);
               keep_smoothed_volume(prop, F);
             }
           update(p, prop, grad_v, F);

@@ -41,6 +41,9 @@ namespace mpm
    * the node average keeps the Q1 functions of the particle's cell.
    * Only the particles @p only selects are updated (contact: one velocity
    * field per pass, @p kinematics and @p volume_scratch that field's).
+   * With @p pressure_over_cell (the explicit step) the bodies whose cell
+   * pressure P2G applies over the cell (remedies::CellPressureForce) take
+   * the cell's exact volume change.
    */
   template <int dim>
   StressUpdateResult
@@ -52,7 +55,8 @@ namespace mpm
     const double                                      dt,
     NodalVector                                      *volume_scratch = nullptr,
     const shape_functions::DomainShapeFunctions<dim> *domains        = nullptr,
-    const FieldSelection                             &only           = {});
+    const FieldSelection                             &only           = {},
+    bool pressure_over_cell                                          = false);
 
   /// The stability limit of the current state (no update).
   template <int dim>
