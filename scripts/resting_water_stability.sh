@@ -6,18 +6,22 @@
 # Volumetric smoothing = cell or node a disturbance grows from round-off.
 # Prints, per variant and CFL number, the growth rate of |momentum_x|
 # (fitted where it lies between 1e-11 and 1e-5), the largest speed at the
-# end, and the particles' top over the level their volume gives (1 when
-# the water fills its volume; below 1 when its particles crowd).
+# end, the particles' top over the level their volume gives (1 when
+# the water fills its volume; below 1 when its particles crowd), and the
+# particles' volume in the bottom and the top cell row over the row's
+# area (1 when the particles tile the rows). With SLOSH=v the layer
+# starts with the velocity v_x = v sin(pi x / 0.2) y / 0.06 instead of
+# at rest, and sloshes until the viscosity and the FLIP blend stop it.
 # Usage: scripts/resting_water_stability.sh [RESULTS]
 #        (MPM=..., VARIANTS="none cell node", FLIPS="0.95 1",
-#         CFLS="0.5 0.25 0.1", END=3; about 1 minute)
+#         CFLS="0.5 0.25 0.1", END=3, SLOSH=0; about 1 minute)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=${MPM:-$root/build/mpm}
 results=${1:-$root/results/resting_water}
 mkdir -p "$results"
-echo "| smoothing | FLIP fraction | CFL | growth rate of momentum_x [1/s] | max speed at the end [m/s] | top / volume level |"
-echo "|---|---|---|---|---|---|"
+echo "| smoothing | FLIP fraction | CFL | growth rate of momentum_x [1/s] | max speed at the end [m/s] | top / volume level | bottom row fill | top row fill |"
+echo "|---|---|---|---|---|---|---|---|"
 for variant in ${VARIANTS:-none cell node}; do
  for flip in ${FLIPS:-0.95 1}; do
   for cfl in ${CFLS:-0.5 0.25 0.1}; do
@@ -48,6 +52,7 @@ subsection Bodies
     set Upper corner = 0.2, 0.06
     set Subdivisions = 20, 6
     set Body force = 0; -g
+    set Initial velocity = ${SLOSH:-0}*sin(pi*x/0.2)*y/depth; 0
     set Initial stress = -rho*g*(depth-y); -rho*g*(depth-y); 0; -rho*g*(depth-y)
     subsection Locking remedies
       set Volumetric smoothing = $variant
@@ -81,7 +86,9 @@ d = np.genfromtxt(sorted(glob.glob(run + "/particles-*.csv"))[-1],
                   delimiter=",", names=True)
 speed = np.sqrt(d["v_x"] ** 2 + d["v_y"] ** 2).max()
 top = np.percentile(d["y"] + np.sqrt(d["volume"]) / 2, 99)
-print(f"| {variant} | {flip} | {cfl} | {rate} | {speed:.2g} | {top / (d['volume'].sum() / 0.2):.2f} |")
+row = np.floor(d["y"] / 0.01)
+fill = [d["volume"][row == r].sum() / (0.2 * 0.01) for r in (0, 5)]
+print(f"| {variant} | {flip} | {cfl} | {rate} | {speed:.2g} | {top / (d['volume'].sum() / 0.2):.2f} | {fill[0]:.3f} | {fill[1]:.3f} |")
 PY
   done
  done
