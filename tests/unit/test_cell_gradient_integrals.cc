@@ -4,11 +4,11 @@
 #endif
 // The cell integrals behind a fluid's cell pressure over its cell
 // (remedies::cell_gradient_integrals, cell_mean_velocity_gradient), on
-// distorted bilinear and trilinear cells: the 2^dim-point Gauss rule
-// against a 3^dim-point one (both exact if the claim holds: the
-// difference is round-off), the integrals sum to zero (a uniform pressure
-// has no resultant), sum_v x_v (x) int grad N_v = |c| I, and the mean
-// velocity gradient of a linear field is its gradient.
+// boxes (closed form) and distorted bilinear and trilinear cells (the
+// 2^dim-point Gauss rule) against a 3^dim-point Gauss rule (both exact if the
+// claim holds: the difference is round-off), the integrals sum to zero (a
+// uniform pressure has no resultant), sum_v x_v (x) int grad N_v = |c| I, and
+// the mean velocity gradient of a linear field is its gradient.
 #include <deal.II/base/tensor.h>
 
 #include <mpm/grid/nodal_layout.h>
@@ -25,18 +25,18 @@ using mpm::shape_functions::Q1Cell;
 
 namespace
 {
-  /// The unit cube stretched and with each vertex moved by up to 0.15 in
-  /// each direction (deterministic in @p seed): a general bilinear
-  /// (trilinear) cell.
+  /// The unit cube stretched and with each vertex moved by up to
+  /// @p amplitude in each direction (deterministic in @p seed): a general
+  /// bilinear (trilinear) cell, or with 0 a box (the closed form).
   template <int dim>
   Q1Cell<dim>
-  distorted_cell(const unsigned int seed)
+  distorted_cell(const unsigned int seed, const double amplitude)
   {
     std::array<Point<dim>, Q1Cell<dim>::n_vertices> corners;
     for (unsigned int i = 0; i < corners.size(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
         corners[i][d] = (((i >> d) & 1) ? 1. + 0.2 * d : 0.) +
-                        0.15 * std::sin(1.7 * seed + 2.3 * i + 0.9 * d);
+                        amplitude * std::sin(1.7 * seed + 2.3 * i + 0.9 * d);
     Q1Cell<dim> cell;
     cell.reinit(corners, 1e-12);
     return cell;
@@ -78,12 +78,13 @@ namespace
 
   template <int dim>
   void
-  check(const unsigned int seed)
+  check(const unsigned int seed, const double amplitude)
   {
     constexpr unsigned int nv  = Q1Cell<dim>::n_vertices;
-    const Q1Cell<dim>      geo = distorted_cell<dim>(seed);
-    Tensor<1, dim>         two[nv], three[nv];
-    const double measure = mpm::remedies::cell_gradient_integrals(geo, two);
+    const Q1Cell<dim>      geo = distorted_cell<dim>(seed, amplitude);
+    BOOST_TEST(geo.is_box == (amplitude == 0));
+    Tensor<1, dim> two[nv], three[nv];
+    const double   measure = mpm::remedies::cell_gradient_integrals(geo, two);
     BOOST_TEST(std::abs(measure - three_point_integrals(geo, three)) <=
                1e-14 * measure);
     Tensor<1, dim> resultant;
@@ -120,14 +121,20 @@ namespace
   }
 } // namespace
 
+BOOST_AUTO_TEST_CASE(boxes)
+{
+  check<2>(1, 0.);
+  check<3>(1, 0.);
+}
+
 BOOST_AUTO_TEST_CASE(bilinear_cells)
 {
   for (unsigned int seed = 1; seed <= 5; ++seed)
-    check<2>(seed);
+    check<2>(seed, 0.15);
 }
 
 BOOST_AUTO_TEST_CASE(trilinear_cells)
 {
   for (unsigned int seed = 1; seed <= 5; ++seed)
-    check<3>(seed);
+    check<3>(seed, 0.15);
 }

@@ -14,18 +14,32 @@ namespace mpm
   {
     /**
      * int_c grad N_v dx of the cell @p geo's 2^dim Q1 functions into
-     * @p integral; returns the cell's measure. The 2^dim-point Gauss rule
-     * is exact for any bilinear (trilinear) cell: grad N_v det(dx/dxi) is
-     * at most cubic in each reference coordinate.
+     * @p integral; returns the cell's measure. A box has them in closed
+     * form; any other cell by the 2^dim-point Gauss rule, exact for any
+     * bilinear (trilinear) cell: grad N_v det(dx/dxi) is at most cubic in
+     * each reference coordinate.
      */
     template <int dim>
     inline double
     cell_gradient_integrals(const shape_functions::Q1Cell<dim> &geo,
                             dealii::Tensor<1, dim>             *integral)
     {
-      constexpr unsigned int nv      = shape_functions::n_q1<dim>;
-      const double           a       = 0.5 / std::sqrt(3.);
-      double                 measure = 0;
+      constexpr unsigned int nv = shape_functions::n_q1<dim>;
+      if (geo.is_box)
+        {
+          // int_c dN_v/dx_d = +-|c| / (2^(dim-1) h_d), + on the far side
+          double measure = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            measure *= geo.extent[d];
+          const double face = measure / (1u << (dim - 1));
+          for (unsigned int v = 0; v < nv; ++v)
+            for (unsigned int d = 0; d < dim; ++d)
+              integral[v][d] =
+                (((v >> d) & 1) ? face : -face) * geo.inverse_extent[d];
+          return measure;
+        }
+      const double a       = 0.5 / std::sqrt(3.);
+      double       measure = 0;
       for (unsigned int v = 0; v < nv; ++v)
         integral[v] = dealii::Tensor<1, dim>();
       for (unsigned int q = 0; q < nv; ++q)
