@@ -190,6 +190,9 @@ namespace mpm
       struct Buffered
       {
         dealii::Tensor<2, dim> grad_v, F;
+        /// false: not updated in this pass (another contact field's, a
+        /// rigid body's or a bad domain's particle)
+        bool updated;
       };
       std::vector<Buffered> buffer;
     };
@@ -222,8 +225,7 @@ namespace mpm
             {
               // keep the cell average's bookkeeping in step
               if (averages[body_of(prop)] == VolumeAverage::cell)
-                buffer.push_back(
-                  {dealii::Tensor<2, dim>(), load_matrix<dim>(prop + L::F)});
+                buffer.push_back({{}, {}, false});
               continue;
             }
           store_matrix<dim>(F, prop + L::F);
@@ -261,7 +263,7 @@ namespace mpm
               sum.V += prop[L::volume];
               sum.V_old += V_old;
               sum.V_old_trL += V_old * trace(grad_v);
-              buffer.push_back({grad_v, F});
+              buffer.push_back({grad_v, F, true});
             }
         }
       if (buffer.empty())
@@ -274,7 +276,9 @@ namespace mpm
           double *prop = p.get_properties().data();
           if (averages[body_of(prop)] != VolumeAverage::cell)
             continue;
-          auto &[grad_v, F]      = buffer[k++];
+          auto &[grad_v, F, updated] = buffer[k++];
+          if (!updated)
+            continue;
           const unsigned int b   = body_of(prop);
           const auto        &sum = cell_sums[b];
           const double       J   = determinant(F);
