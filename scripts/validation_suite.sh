@@ -54,7 +54,9 @@
 #                   (doc/benchmarks/hertz_contact.md)              35 min
 #   glass_pour      scripts/glass_pour_study.sh + figures, water poured
 #                   into a glass, 2D and 3D, standard and both remedies
-#                   (doc/benchmarks/glass_pour.md)                  7 min
+#                   (doc/benchmarks/glass_pour.md), and
+#                   scripts/resting_water_stability.sh from rest, seeded
+#                   and sloshing (doc/theory/volumetric_smoothing.md) 9 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
 # Full suite: about 4.6 hours. QUICK=1 (coarse grids, short runs, few
@@ -236,6 +238,14 @@ part_hertz_contact() {
 }
 
 part_glass_pour() {
+  "$root/scripts/resting_water_stability.sh" "$res/resting-water" \
+    > "$res/resting-water.txt"
+  SLOSH=1e-6 END=6 FLIPS="0.95 0.99 1" CFLS="0.5 0.1" \
+    "$root/scripts/resting_water_stability.sh" "$res/resting-water-seeded" \
+    > "$res/resting-water-seeded.txt"
+  SLOSH=0.1 END=6 FLIPS=0.95 CFLS="0.5 0.1" \
+    "$root/scripts/resting_water_stability.sh" "$res/resting-water-slosh" \
+    > "$res/resting-water-slosh.txt"
   if [ "$quick" = 1 ]; then
     DIMS=2 "$root/scripts/glass_pour_study.sh" "$res/glass-pour" \
       > "$res/glass-pour.txt"
