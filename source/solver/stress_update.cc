@@ -226,13 +226,12 @@ namespace mpm
             pressure_over_cell && smoothing.any_pressure_over_cell();
           if (over_cell)
             {
-              cell_rate.mean_grad_v = remedies::cell_mean_velocity_gradient(
-                geo,
-                nodes,
-                in,
-                KinematicsLayout<dim>::n_components,
-                KinematicsLayout<dim>::velocity);
-              cell_rate.dt = dt;
+              cell_rate.mean_grad_v =
+                remedies::cell_mean_velocity_gradient(geo, nodes, in);
+              Tensor<2, dim> step = dt * cell_rate.mean_grad_v;
+              for (unsigned int d = 0; d < dim; ++d)
+                step[d][d] += 1;
+              cell_rate.volume_growth = determinant(step);
             }
           smoothing.update_cell(
             pic,

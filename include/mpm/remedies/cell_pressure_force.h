@@ -4,6 +4,7 @@
 
 #include <mpm/particles/body.h>
 #include <mpm/shape_functions/q1_cell.h>
+#include <mpm/transfer/velocity_gradient.h>
 
 #include <cmath>
 #include <vector>
@@ -59,30 +60,19 @@ namespace mpm
 
     /**
      * The mean velocity gradient over the cell @p geo (nodes @p nodes) of
-     * the nodal velocities in @p kinematics (stride @p stride, the
-     * velocity at offset @p velocity): (1/|c|) int_c grad v dx, exact for
-     * the grid's Q1 field.
+     * the nodal velocities in @p kinematics (KinematicsLayout):
+     * (1/|c|) int_c grad v dx, exact for the grid's Q1 field.
      */
     template <int dim>
     inline dealii::Tensor<2, dim>
     cell_mean_velocity_gradient(const shape_functions::Q1Cell<dim> &geo,
                                 const unsigned int                 *nodes,
-                                const double                       *kinematics,
-                                const unsigned int                  stride,
-                                const unsigned int                  velocity)
+                                const double                       *kinematics)
     {
-      constexpr unsigned int nv = shape_functions::n_q1<dim>;
-      dealii::Tensor<1, dim> integral[nv];
+      dealii::Tensor<1, dim> integral[shape_functions::n_q1<dim>];
       const double           measure = cell_gradient_integrals(geo, integral);
-      dealii::Tensor<2, dim> L;
-      for (unsigned int v = 0; v < nv; ++v)
-        {
-          const double *node = kinematics + nodes[v] * stride + velocity;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              L[i][j] += node[i] * integral[v][j];
-        }
-      return L / measure;
+      return transfer::velocity_gradient<dim>(kinematics, nodes, integral) /
+             measure;
     }
 
     /**

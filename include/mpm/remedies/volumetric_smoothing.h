@@ -130,12 +130,14 @@ namespace mpm
           }
       }
 
-      /// The cell's exact mean velocity gradient (cell_mean_velocity_gradient)
-      /// and the step, for the bodies whose pressure acts over the cell.
+      /// The cell's exact mean velocity gradient <grad v>
+      /// (cell_mean_velocity_gradient) and the volume growth det(I + dt
+      /// <grad v>) of the step, for the bodies whose pressure acts over
+      /// the cell.
       struct CellRate
       {
         dealii::Tensor<2, dim> mean_grad_v;
-        double                 dt = 0;
+        double                 volume_growth = 1;
       };
 
       /**
@@ -285,18 +287,12 @@ namespace mpm
           if (J > 0)
             {
               if (cell_rate && over_cell[b])
-                {
-                  const auto            &L_c  = cell_rate->mean_grad_v;
-                  dealii::Tensor<2, dim> step = cell_rate->dt * L_c;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    step[d][d] += 1;
-                  smooth_volume_change<dim>(grad_v,
-                                            F,
-                                            J,
-                                            sum.V_old * determinant(step) /
-                                              sum.V0,
-                                            trace(L_c));
-                }
+                smooth_volume_change<dim>(grad_v,
+                                          F,
+                                          J,
+                                          sum.V_old * cell_rate->volume_growth /
+                                            sum.V0,
+                                          trace(cell_rate->mean_grad_v));
               else
                 smooth_volume_change<dim>(
                   grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);
