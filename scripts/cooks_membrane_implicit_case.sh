@@ -8,7 +8,8 @@
 # FILTER=mass|compliance the assumed-stress filter with that metric;
 # SMOOTHING=cell theta-bar; SUPPORT=x Implicit solver/Minimum nodal
 # support; PRECONDITIONER="AMG with cell pressure" Implicit
-# solver/Preconditioner, GAMMA its Cell pressure gamma.
+# solver/Preconditioner, GAMMA its Cell pressure gamma; GHOST=beta
+# Implicit solver/Ghost penalty.
 # Usage: scripts/cooks_membrane_implicit_case.sh H OUTDIR > case.prm
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -41,6 +42,7 @@ subsection Implicit solver
   set Minimum nodal support = ${SUPPORT:-1e-4}
   set Preconditioner = ${PRECONDITIONER:-AMG}
   set Cell pressure gamma = ${GAMMA:-10}
+  set Ghost penalty = ${GHOST:-0}
 end
 subsection Output
   set Directory = $out

@@ -17,7 +17,10 @@
 # theta-bar") lists the variants; filter is the assumed-stress filter with
 # the compliance metric; theta-bar-split is theta-bar with Implicit
 # solver/Preconditioner = AMG with cell pressure (the same curve, fewer
-# GMRES iterations).
+# GMRES iterations). GHOST (default: the parameter file's 0.01) sets
+# Implicit solver/Ghost penalty; theta-bar runs with Particle volume =
+# smoothed unless PARTICLE_VOLUME=own. MIN_J=1 writes the particle tables
+# and adds the smallest volume ratio V/V0 of the soil at 0.2 B.
 # Usage: scripts/strip_footing_study.sh [OUT] [h values...]   (MPM=...)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -25,8 +28,13 @@ mpm=${MPM:-$root/build/mpm}
 out=$(realpath -m "${1:-results/strip_footing}")
 shift || true
 mkdir -p "$out"
-echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | settlement reached / B | Newton | wall [s] |"
-echo "|---|---|---|---|---|---|---|---|---|"
+if [ -n "${MIN_J:-}" ]; then
+  echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | settlement reached / B | Newton | wall [s] | smallest V/V0 at 0.2 B |"
+  echo "|---|---|---|---|---|---|---|---|---|---|"
+else
+  echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | settlement reached / B | Newton | wall [s] |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+fi
 for h in ${@:-0.25 0.125 0.0625}; do
   read -r nx ny ns nf <<< "$(python3 -c "print(round(5/$h), round(6.25/$h), round(5/$h), round(0.5/$h))")"
   for family in ${FAMILIES:-standard}; do
@@ -52,9 +60,11 @@ subsection Output
   set Directory = $dir
   set Interval = 0.01
   set Write vtu = false
+  set Write csv = $([ -n "${MIN_J:-}" ] && echo true || echo false)
 end
 subsection Implicit solver
   set Preconditioner = $preconditioner
+  set Ghost penalty = ${GHOST:-0.01}
 end
 subsection Bodies
   subsection Body 0
@@ -63,6 +73,7 @@ subsection Bodies
       set Volumetric smoothing = $smoothing
       set Stress filter = $filter
       set Filter metric = compliance
+      set Particle volume = ${PARTICLE_VOLUME:-smoothed}
     end
   end
   subsection Body 1
@@ -91,8 +102,18 @@ def at(s):
     c = [q for x, q in pts if abs(x - s) < 1e-9]
     return f"{c[0]:.3f}" if c else "-"
 newton = sum(int(float(r["newton_iterations"])) for r in rows)
+# the soil's smallest V/V0 at 0.2 B, from its particle table (MIN_J=1)
+import csv, os
+min_j = ""
+# (one table per step from t = 0, as statistics.txt's rows)
+index = [i for i, r in enumerate(rows) if abs(float(r["time"]) - 0.2) < 1e-9]
+table = os.path.join(os.path.dirname(path), "particles-%05d.csv" % index[0]) if index else ""
+if table and os.path.exists(table):
+    j = [float(r["volume"]) / float(r["volume0"]) for r in csv.DictReader(open(table))
+         if int(float(r["body"])) == 0]
+    min_j = f" {min(j):.3f} |"
 print(f"| {variant} | {h} | {at(0.05)} | {at(0.1)} | {at(0.2)} | "
-      f"{pts[-1][1]:.3f} | {pts[-1][0]:.2f} | {newton} | {wall} |")
+      f"{pts[-1][1]:.3f} | {pts[-1][0]:.2f} | {newton} | {wall} |{min_j}")
 PY
   done
   done

@@ -31,6 +31,9 @@
 #   water_column    scripts/water_column_study.sh + plot            1.8 min
 #   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static,
 #                   standard MPM and CPDI (doc/benchmarks/strip_footing.md)  9 min
+#   ghost_penalty   scripts/ghost_penalty_study.sh, Cook's membrane of
+#                   neo-Hookean material at finite strain, every family
+#                   and beta (doc/guide/implicit.md)                40 s
 #   thick_cylinder_implicit  scripts/thick_cylinder_implicit.sh + plot,
 #                   quasi-static (doc/benchmarks/thick_cylinder.md)        35 s
 #   implicit_preconditioner  scripts/implicit_scaling.sh for theta-bar
@@ -71,7 +74,7 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 quick=${QUICK:-0}
-parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect sliding_block colliding_disks hertz_contact glass_pour recompute"}
+parts=${PARTS:-"fe cantilever column thick_cylinder convecting_bar mms spinning_disk axial_bar cooks_membrane water_column strip_footing ghost_penalty thick_cylinder_implicit implicit_preconditioner column_implicit cantilever_newmark cantilever_aspect sliding_block colliding_disks hertz_contact glass_pour recompute"}
 export MPM=${MPM:-$root/build/mpm}
 fe=$root/build/mpm-fe
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -208,6 +211,13 @@ part_strip_footing() {
   [ "$quick" = 1 ] && h=0.25
   FAMILIES="standard CPDI" "$root/scripts/strip_footing_study.sh" "$res/strip-footing" $h &&
     $py "$root/scripts/plot_strip_footing.py" "$res/strip-footing" "$figs/strip_footing.png"
+}
+
+part_ghost_penalty() {
+  local families=""
+  [ "$quick" = 1 ] && families="standard uGIMP"
+  FAMILIES=${families:-"standard uGIMP cpGIMP CPDI CPDI2"} BETAS="0 1e-5 1e-4 1e-3 1e-2" \
+    "$root/scripts/ghost_penalty_study.sh" "$res/ghost-penalty"
 }
 
 part_sliding_block() {

@@ -32,6 +32,10 @@ namespace mpm
     , beta(s.params.time.newmark_beta)
     , gamma(s.params.time.newmark_gamma)
     , damping(dynamic ? s.params.time.damping : 0.)
+    , ghost_penalty(s.params.implicit.ghost_penalty > 0 ?
+                      s.params.implicit.ghost_penalty *
+                        GhostPenalty<dim>::youngs_modulus(s.bodies) :
+                      0.)
     , smoothing(std::make_unique<Smoothing>(s.bodies))
   {
     using LinearSolver    = Parameters::ImplicitSolver::LinearSolver;
@@ -233,8 +237,9 @@ namespace mpm
     if (partition != state.background.node_partitioner())
       {
         TimerOutput::Scope t(state.timer, "implicit set-up");
-        partition = state.background.node_partitioner();
-        system.reinit(state.background, state.comm);
+        partition   = state.background.node_partitioner();
+        face_groups = ghost_penalty.couplings(state.background);
+        system.reinit(state.background, state.comm, face_groups);
         stencils = CellStencils<dim>(state.background.n_local_nodes());
         // int N_a = |cell| / 2^dim from each cell at the node (exact on
         // parallelograms)
@@ -357,6 +362,7 @@ namespace mpm
         state.p2g.local_element(i * P::n_components + P::mass) >
           state.min_nodal_mass &&
         support.local_element(i) >= fraction * full_support.local_element(i);
+    ghost_penalty.select_faces(grid, active, support, full_support);
     find_prescribed_nodes();
     std::vector<Tensor<1, dim>> values(grid.n_local_nodes());
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
@@ -437,7 +443,11 @@ namespace mpm
         rigid_mass.update_ghost_values();
       }
     if (wide)
-      system.couple(stencil_groups);
+      {
+        // (the ghost penalty's faces couple beyond the stencils)
+        stencil_groups.append(face_groups);
+        system.couple(stencil_groups);
+      }
   }
 
   template <int dim>
@@ -1140,6 +1150,9 @@ namespace mpm
         return gather_cell(weights, pic, t, error) &&
                add_cell_system(cell, pic, dt, with_matrix, error);
       });
+    if (ok && ghost_penalty.enabled())
+      ghost_penalty.add_to_system(
+        state.background, increment, with_matrix, system, internal_force);
     const double inertia = with_inertia ? add_inertia(dt, with_matrix) : 0.;
     // Every rank takes part in the exchanges, whatever happened here.
     system.finish_assembly(with_matrix);

@@ -28,7 +28,8 @@ namespace mpm
   template <int dim>
   void
   NodalLinearSystem<dim>::reinit(const BackgroundGrid<dim> &grid,
-                                 const MPI_Comm             communicator)
+                                 const MPI_Comm             communicator,
+                                 const NodeGroups          &extra)
   {
     comm                  = communicator;
     const auto  partition = grid.node_partitioner();
@@ -55,6 +56,7 @@ namespace mpm
                            grid.nodes(cell) + BackgroundGrid<dim>::n_vertices);
         cells.close_group();
       }
+    cells.append(extra);
     couple(cells);
   }
 

@@ -7,12 +7,20 @@ namespace mpm
   {
     namespace
     {
+      /// The body's `Volumetric smoothing` (null: none).
+      template <int dim>
+      const VolumetricSmoothingSettings *
+      settings_of(const Body<dim> &body)
+      {
+        return body.prm.locking_remedies
+          .template find<VolumetricSmoothingSettings>();
+      }
+
       template <int dim>
       VolumeAverage
       average_of(const Body<dim> &body)
       {
-        const auto *choice = body.prm.locking_remedies
-                               .template find<VolumetricSmoothingSettings>();
+        const auto *choice = settings_of(body);
         return choice ? choice->average : VolumeAverage::none;
       }
     } // namespace
@@ -27,12 +35,16 @@ namespace mpm
     {
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          averages[b]     = average_of(bodies[b]);
-          keeps_volume[b] = bodies[b].material->state_is_volume_ratio();
-          over_cell[b]    = pressure_over_cell(bodies[b]);
-          any_cell        = any_cell || averages[b] == VolumeAverage::cell;
-          any_node        = any_node || averages[b] == VolumeAverage::node;
-          any_over_cell   = any_over_cell || over_cell[b];
+          averages[b]          = average_of(bodies[b]);
+          const auto *settings = settings_of(bodies[b]);
+          keeps_volume[b] =
+            bodies[b].material->state_is_volume_ratio() ||
+            (settings && settings->average == VolumeAverage::cell &&
+             settings->keeps_smoothed_volume);
+          over_cell[b]  = pressure_over_cell(bodies[b]);
+          any_cell      = any_cell || averages[b] == VolumeAverage::cell;
+          any_node      = any_node || averages[b] == VolumeAverage::node;
+          any_over_cell = any_over_cell || over_cell[b];
         }
     }
 

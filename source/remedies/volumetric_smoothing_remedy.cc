@@ -21,12 +21,29 @@ namespace mpm
         }
 
         static void
-        declare_parameters(dealii::ParameterHandler &)
-        {}
+        declare_parameters(dealii::ParameterHandler &prm)
+        {
+          if (where != VolumeAverage::cell)
+            return;
+          prm.declare_entry(
+            "Particle volume",
+            "own",
+            dealii::Patterns::Selection("own|smoothed"),
+            "What a solid's particles keep after a step with Volumetric "
+            "smoothing = cell. own: each its own compatible F and volume "
+            "(only the stress sees the cell's volume change). smoothed: the "
+            "smoothed F_bar = (J_bar/J)^(1/d) F and V = J_bar V0, as a "
+            "fluid's particles always do, so that no particle loses volume "
+            "that no pressure acts on (doc/theory/volumetric_smoothing.md). "
+            "Ignored with Volumetric smoothing = node.");
+        }
 
         void
-        parse_parameters(dealii::ParameterHandler &) override
-        {}
+        parse_parameters(dealii::ParameterHandler &prm) override
+        {
+          if (where == VolumeAverage::cell)
+            keeps_smoothed_volume = prm.get("Particle volume") == "smoothed";
+        }
 
         /// The cell average is linearized for the implicit step
         /// (LinearizedCellSmoothing); the node average, which couples

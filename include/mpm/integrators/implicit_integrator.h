@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <mpm/integrators/cell_stencils.h>
+#include <mpm/integrators/ghost_penalty.h>
 #include <mpm/integrators/nodal_linear_system.h>
 #include <mpm/integrators/time_integrator.h>
 #include <mpm/remedies/linearized_cell_smoothing.h>
@@ -229,6 +230,10 @@ namespace mpm
     std::vector<unsigned int>  prescribed_by;
     dealii::Tensor<1, dim>     reaction; ///< of the last sub-step
     using Smoothing = remedies::LinearizedCellSmoothing<dim>;
+    /// `Implicit solver/Ghost penalty`, and the nodes of the faces it may
+    /// assemble (added to every sparsity)
+    GhostPenalty<dim>                           ghost_penalty;
+    typename NodalLinearSystem<dim>::NodeGroups face_groups;
     /// `Volumetric smoothing = cell` of the trial increments
     std::unique_ptr<Smoothing>             smoothing;
     std::vector<typename Smoothing::Point> points; ///< of one cell

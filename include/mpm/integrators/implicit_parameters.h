@@ -40,6 +40,8 @@ namespace mpm
       double       linear_tolerance      = 1e-10;
       unsigned int max_linear_iterations = 2000;
       double       min_nodal_support     = 1e-4;
+      /// beta of the ghost penalty on weakly covered cells (0: off)
+      double ghost_penalty = 0;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -53,12 +53,24 @@ namespace mpm
       {
         start.push_back(nodes.size());
       }
+      /// The groups of @p other, added after these.
+      void
+      append(const NodeGroups &other)
+      {
+        const unsigned int offset = nodes.size();
+        nodes.insert(nodes.end(), other.nodes.begin(), other.nodes.end());
+        for (unsigned int g = 1; g < other.start.size(); ++g)
+          start.push_back(offset + other.start[g]);
+      }
     };
 
     /// Index sets of the grid's current partition, and the sparsity of
-    /// its owned cells.
+    /// its owned cells and of the groups @p extra (the ghost penalty's
+    /// faces).
     void
-    reinit(const BackgroundGrid<dim> &grid, const MPI_Comm comm);
+    reinit(const BackgroundGrid<dim> &grid,
+           const MPI_Comm             comm,
+           const NodeGroups          &extra = NodeGroups());
 
     /// The sparsity (and a zero matrix) of @p groups instead. Collective.
     void

@@ -27,8 +27,9 @@ namespace mpm
      *   models that compute stress from F (neo-Hookean, the fluid's
      *   equation of state).
      * d is the model dimension (in-plane for 2D, as in de Souza Neto's
-     * plane-strain F-bar). L and F are only what the material sees; the
-     * particle keeps its own compatible F and volume.
+     * plane-strain F-bar). L and F are what the material sees; the
+     * particle keeps its own compatible F and volume unless it keeps the
+     * smoothed ones (fluids, `Particle volume = smoothed`).
      */
     template <int dim>
     inline void
@@ -151,7 +152,8 @@ namespace mpm
        * velocity gradient and new F (false for a bad particle; it fills
        * @p N, the Q1 values at the particle, for the node average);
        * `update(p, prop, grad_v, F)` runs the material with what this
-       * makes of them. F and V of the particle itself are its own.
+       * makes of them. F and V of the particle itself are its own,
+       * except where it keeps the smoothed volume (keep_smoothed_volume()).
        */
       template <typename ParticleRange, typename Kinematics, typename Update>
       void
@@ -164,8 +166,9 @@ namespace mpm
                   Update            &&update);
 
     private:
-      /// Models whose state is J alone (the fluid) keep the smoothed
-      /// volume (Material::state_is_volume_ratio).
+      /// Models whose state is J alone (the fluid, Material::
+      /// state_is_volume_ratio), and the bodies of `Particle volume =
+      /// smoothed`, keep the smoothed F and volume.
       void
       keep_smoothed_volume(double *prop, const dealii::Tensor<2, dim> &F) const
       {

@@ -20,6 +20,10 @@ namespace mpm
     struct VolumetricSmoothingSettings
     {
       VolumeAverage average = VolumeAverage::none;
+      /// `Particle volume = smoothed` (cell average): a solid's particles
+      /// keep the smoothed F_bar and V = J_bar V0 after each step, as a
+      /// fluid's always do; false: each keeps its own F and volume.
+      bool keeps_smoothed_volume = false;
     };
   } // namespace remedies
 } // namespace mpm
