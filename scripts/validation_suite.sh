@@ -30,7 +30,7 @@
 #                   and 2 and 3 at h = 1                           20 min
 #   water_column    scripts/water_column_study.sh + plot            1.8 min
 #   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static,
-#                   standard MPM and CPDI (doc/benchmarks/strip_footing.md)  9 min
+#                   standard MPM and CPDI (doc/benchmarks/strip_footing.md) 33 min
 #   ghost_penalty   scripts/ghost_penalty_study.sh, Cook's membrane of
 #                   neo-Hookean material at finite strain, every family
 #                   and beta (doc/guide/implicit.md)                40 s
@@ -62,7 +62,7 @@
 #                   and sloshing (doc/theory/volumetric_smoothing.md) 9 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
-# Full suite: about 4.6 hours. QUICK=1 (coarse grids, short runs, few
+# Full suite: about 5 hours. QUICK=1 (coarse grids, short runs, few
 # variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.

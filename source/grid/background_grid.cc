@@ -151,6 +151,7 @@ namespace mpm
     // owned node sees all its adjacent cells there.
     std::vector<std::vector<Tensor<1, dim>>> normals(n_owned + n_ghost);
     std::vector<bool>                        fixed(n_owned + n_ghost, false);
+    moving_node.assign(n_owned + n_ghost, 0);
     auto contains = [](const std::vector<types::boundary_id> &ids,
                        const types::boundary_id               id) {
       return std::find(ids.begin(), ids.end(), id) != ids.end();
@@ -166,6 +167,11 @@ namespace mpm
             const auto id       = cell->face(f)->boundary_id();
             const bool is_fixed = contains(bc.fixed, id);
             const bool is_slip  = contains(bc.slip, id);
+            if (contains(bc.moving, id))
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                moving_node[cell_nodes[cell->active_cell_index() * n_vertices +
+                                       GeometryInfo<dim>::face_to_cell_vertices(
+                                         f, v)]] = 1;
             if (!is_fixed && !is_slip)
               continue;
             // Outward unit normal of the (straight) face at its centre.
@@ -201,6 +207,10 @@ namespace mpm
               }
           }
       }
+    // (a fixed node does not move with a boundary)
+    for (unsigned int i = 0; i < n_owned + n_ghost; ++i)
+      if (fixed[i])
+        moving_node[i] = 0;
     constraint_of_node.assign(n_owned + n_ghost, numbers::invalid_unsigned_int);
     constraints.clear();
     for (unsigned int i = 0; i < n_owned + n_ghost; ++i)
@@ -265,12 +275,14 @@ namespace mpm
     // by round-off between ranks).
     if (Utilities::MPI::n_mpi_processes(comm) == 1)
       return;
-    constexpr unsigned int nc = 1 + dim * dim;
+    // per node: moving flag, number of normals, normals
+    constexpr unsigned int nc = 2 + dim * dim;
     NodalVector            data;
     initialize_vector(data, nc);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        const auto c = constraint_of_node[i];
+        data.local_element(i * nc + 1 + dim * dim) = moving_node[i];
+        const auto c                               = constraint_of_node[i];
         if (c == numbers::invalid_unsigned_int)
           continue;
         data.local_element(i * nc) = constraints[c].n_normals;
@@ -282,6 +294,7 @@ namespace mpm
     data.update_ghost_values();
     for (unsigned int i = n_owned; i < n_owned + n_ghost; ++i)
       {
+        moving_node[i] = data.local_element(i * nc + 1 + dim * dim) != 0;
         NodeConstraint c;
         c.n_normals = static_cast<unsigned int>(data.local_element(i * nc));
         for (unsigned int k = 0; k < c.n_normals; ++k)

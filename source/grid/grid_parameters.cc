@@ -4,6 +4,9 @@
 #include <mpm/parameters/parsing.h>
 #include <mpm/utilities/input_error.h>
 
+#include <algorithm>
+#include <utility>
+
 namespace mpm
 {
   namespace Parameters
@@ -108,6 +111,31 @@ namespace mpm
                         "directions (a corner of a 2D box is then fixed). "
                         "Boundaries not listed here or in Fixed boundary "
                         "ids are free: particles may leave the grid there.");
+      prm.declare_entry(
+        "Moving boundary ids",
+        "",
+        Patterns::List(Patterns::Integer(0, 255)),
+        "Grid boundary ids whose nodes move with the Moving boundary "
+        "velocity: a prescribed displacement of the grid boundary, ramped "
+        "in pseudo-time. Time stepping/Integrator = quasi-static only (the "
+        "explicit and Newmark integrators refuse it). A node that also "
+        "touches a fixed face is fixed; one that touches a slip face keeps "
+        "the wall's normal direction at zero and moves in the others. The "
+        "force the moving nodes exert on the bodies is written to the "
+        "statistics file (boundary_reaction_x, ...). The grid does not "
+        "move: use it for displacements small against a cell across the "
+        "boundary, or along it (a shear box); a rigid body of particles "
+        "(Bodies/Body n/Prescribed velocity) pushes a body through the "
+        "grid. An id listed here and in Fixed or Slip boundary ids is "
+        "refused.");
+      prm.declare_entry(
+        "Moving boundary velocity",
+        "",
+        Patterns::Anything(),
+        "The velocity [m/s] of the nodes on the Moving boundary ids: dim "
+        "expressions of the node's position x, y, z and t, separated by "
+        "';' (Constants may be used). Over a step from t to t + dt a node "
+        "moves by its value at t + dt/2 times dt.");
       prm.declare_entry("Particles leaving the grid",
                         "error",
                         Patterns::Selection("error|remove"),
@@ -126,7 +154,19 @@ namespace mpm
       fixed                 = parse_id_list(prm.get("Fixed boundary ids"));
       slip                  = parse_id_list(prm.get("Slip boundary ids"));
       remove_lost_particles = prm.get("Particles leaving the grid") == "remove";
+      moving                = parse_id_list(prm.get("Moving boundary ids"));
+      moving_velocity       = prm.get("Moving boundary velocity");
       prm.leave_subsection();
+      for (const auto m : moving)
+        for (const auto &[list, name] :
+             {std::make_pair(&fixed, "fixed"), std::make_pair(&slip, "slip")})
+          if (std::find(list->begin(), list->end(), m) != list->end())
+            throw InputError("Boundary conditions: boundary id " +
+                             std::to_string(m) + " is listed as both " + name +
+                             " and moving");
+      if (!moving.empty() && moving_velocity.empty())
+        throw InputError("Boundary conditions/Moving boundary ids is set, "
+                         "but Moving boundary velocity is empty");
       for (const auto f : fixed)
         for (const auto s : slip)
           if (f == s)

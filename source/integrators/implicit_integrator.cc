@@ -74,6 +74,17 @@ namespace mpm
           rigid_bodies.push_back(b);
         has_body_force.push_back(body.has_body_force());
       }
+    // (parameters.cc refuses it for the other integrators)
+    if (!p.boundary.moving.empty())
+      {
+        boundary_velocity = std::make_unique<Expression<dim>>(
+          p.boundary.moving_velocity,
+          dim,
+          spatial_variables(dim),
+          p.constants,
+          true,
+          "Boundary conditions/Moving boundary velocity");
+      }
     linear_solver = p.implicit.linear_solver;
     if (linear_solver == LinearSolver::automatic)
       linear_solver = symmetric ? LinearSolver::cg : LinearSolver::gmres;
@@ -210,6 +221,9 @@ namespace mpm
     if (!rigid_bodies.empty())
       for (unsigned int d = 0; d < dim; ++d)
         c.push_back(std::string("reaction_") + "xyz"[d]);
+    if (boundary_velocity)
+      for (unsigned int d = 0; d < dim; ++d)
+        c.push_back(std::string("boundary_reaction_") + "xyz"[d]);
     return c;
   }
 
@@ -226,6 +240,9 @@ namespace mpm
     if (!rigid_bodies.empty())
       for (unsigned int d = 0; d < dim; ++d)
         v.push_back(reaction[d]);
+    if (boundary_velocity)
+      for (unsigned int d = 0; d < dim; ++d)
+        v.push_back(boundary_reaction[d]);
     return v;
   }
 
@@ -366,7 +383,16 @@ namespace mpm
     find_prescribed_nodes();
     std::vector<Tensor<1, dim>> values(grid.n_local_nodes());
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
-      if (prescribed[i])
+      if (boundary_velocity && grid.on_moving_boundary(i) && active[i])
+        {
+          // (the boundary's motion wins over a rigid body's)
+          double v[dim];
+          boundary_velocity->value(grid.node_position(i), t + dt / 2, v);
+          prescribed[i] = (1u << dim) - 1;
+          for (unsigned int c = 0; c < dim; ++c)
+            values[i][c] = v[c] * dt;
+        }
+      else if (prescribed[i])
         values[i] = rigid_displacement(prescribed_by[i], t, dt);
     system.build_constraints(grid, active, prescribed, values);
     increment = 0.;
@@ -496,13 +522,18 @@ namespace mpm
   void
   ImplicitIntegrator<dim>::compute_reaction()
   {
-    reaction = 0;
-    for (unsigned int i = 0; i < state.background.n_owned_nodes(); ++i)
+    reaction          = 0;
+    boundary_reaction = 0;
+    const auto &grid  = state.background;
+    for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       for (unsigned int c = 0; c < dim; ++c)
         if (prescribed[i] & (1u << c))
-          reaction[c] += internal_force.local_element(i * dim + c) -
-                         external_force.local_element(i * dim + c);
-    reaction = Utilities::MPI::sum(reaction, state.comm);
+          (boundary_velocity && grid.on_moving_boundary(i) ? boundary_reaction :
+                                                             reaction)[c] +=
+            internal_force.local_element(i * dim + c) -
+            external_force.local_element(i * dim + c);
+    reaction          = Utilities::MPI::sum(reaction, state.comm);
+    boundary_reaction = Utilities::MPI::sum(boundary_reaction, state.comm);
   }
 
   template <int dim>

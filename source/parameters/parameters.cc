@@ -1059,6 +1059,12 @@ namespace mpm
       grid.parse_parameters(prm);
       time.parse_parameters(prm);
       boundary.parse_parameters(prm);
+      if (!boundary.moving.empty() &&
+          time.integrator != TimeStepping::Integrator::quasi_static)
+        throw InputError(
+          "Boundary conditions/Moving boundary ids: a moving grid boundary "
+          "needs Time stepping/Integrator = quasi-static (the explicit and "
+          "Newmark integrators have no prescribed grid motion yet)");
       shape_functions.parse_parameters(prm);
       output.parse_parameters(prm);
       checkpointing.parse_parameters(prm);

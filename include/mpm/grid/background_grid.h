@@ -208,6 +208,16 @@ namespace mpm
                constraints[c].n_normals;
     }
 
+    /// Whether node i (owned or ghost, the owner's at a ghost) lies on a
+    /// face of Boundary conditions/Moving boundary ids and on no fixed
+    /// face: it moves with the boundary in the directions no wall
+    /// constrains.
+    bool
+    on_moving_boundary(const unsigned int i) const
+    {
+      return moving_node[i] != 0;
+    }
+
     /// Constrained direction k of node i (orthonormal to the others).
     const dealii::Tensor<1, dim> &
     constrained_direction(const unsigned int i, const unsigned int k) const
@@ -291,8 +301,8 @@ namespace mpm
       std::array<dealii::Tensor<1, dim>, dim> normals;
     };
 
-    /// Ghost nodes get their owner's constraint (complete: the owner sees
-    /// every cell at the node).
+    /// Ghost nodes get their owner's constraint and moving-boundary flag
+    /// (complete: the owner sees every cell at the node).
     void
     take_owners_constraints();
 
@@ -305,13 +315,14 @@ namespace mpm
     std::vector<shape_functions::Q1Cell<dim>>                  cell_geometry;
     std::vector<ActiveCell>                                    owned_cell_list;
     mutable std::vector<ActiveCell> occupied_cell_list;
-    std::vector<unsigned int>                                  cell_nodes;
-    std::vector<unsigned int>                                  neighbors;
-    std::vector<double>                                        cell_heights;
-    std::vector<dealii::Point<dim>>                            node_positions;
-    std::vector<unsigned int>   constraint_of_node;
-    std::vector<NodeConstraint> constraints;
-    unsigned int                n_owned = 0, n_ghost = 0;
-    bool                        cartesian = false;
+    std::vector<unsigned int>       cell_nodes;
+    std::vector<unsigned int>       neighbors;
+    std::vector<double>             cell_heights;
+    std::vector<dealii::Point<dim>> node_positions;
+    std::vector<unsigned int>       constraint_of_node;
+    std::vector<NodeConstraint>     constraints;
+    std::vector<char>               moving_node; ///< on_moving_boundary()
+    unsigned int                    n_owned = 0, n_ghost = 0;
+    bool                            cartesian = false;
   };
 } // namespace mpm

@@ -42,6 +42,9 @@ namespace mpm
     struct BoundaryConditions
     {
       std::vector<dealii::types::boundary_id> fixed, slip;
+      /// Ids whose nodes move with `velocity` (quasi-static step only).
+      std::vector<dealii::types::boundary_id> moving;
+      std::string                             moving_velocity;
       bool                                    remove_lost_particles = false;
 
       static void

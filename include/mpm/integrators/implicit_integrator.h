@@ -10,6 +10,7 @@
 #include <mpm/integrators/nodal_linear_system.h>
 #include <mpm/integrators/time_integrator.h>
 #include <mpm/remedies/linearized_cell_smoothing.h>
+#include <mpm/utilities/expression.h>
 
 #include <memory>
 #include <string>
@@ -193,7 +194,8 @@ namespace mpm
     void
     find_prescribed_nodes();
     /// The force the prescribed nodes exert on the other bodies,
-    /// f_int - f_ext there, summed over the ranks.
+    /// f_int - f_ext there, summed over the ranks: the rigid bodies'
+    /// (reaction) and the moving boundary's (boundary_reaction).
     void
     compute_reaction();
 
@@ -229,6 +231,10 @@ namespace mpm
     std::vector<unsigned char> prescribed;
     std::vector<unsigned int>  prescribed_by;
     dealii::Tensor<1, dim>     reaction; ///< of the last sub-step
+    /// Boundary conditions/Moving boundary velocity (if Moving boundary
+    /// ids), and the force of its nodes on the bodies in the last sub-step
+    std::unique_ptr<Expression<dim>> boundary_velocity;
+    dealii::Tensor<1, dim>           boundary_reaction;
     using Smoothing = remedies::LinearizedCellSmoothing<dim>;
     /// `Implicit solver/Ghost penalty`, and the nodes of the faces it may
     /// assemble (added to every sparsity)
