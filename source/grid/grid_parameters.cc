@@ -117,8 +117,8 @@ namespace mpm
         Patterns::List(Patterns::Integer(0, 255)),
         "Grid boundary ids whose nodes move with the Moving boundary "
         "velocity: a prescribed displacement of the grid boundary, ramped "
-        "in pseudo-time. Time stepping/Integrator = quasi-static only (the "
-        "explicit and Newmark integrators refuse it). A node that also "
+        "in pseudo-time. Time stepping/Integrator = quasi-static or "
+        "Newmark (the explicit integrator refuses it). A node that also "
         "touches a fixed face is fixed; one that touches a slip face keeps "
         "the wall's normal direction at zero and moves in the others. The "
         "force the moving nodes exert on the bodies is written to the "

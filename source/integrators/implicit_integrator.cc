@@ -334,7 +334,7 @@ namespace mpm
                         << "): step cut to " << sub << std::endl;
             continue;
           }
-        compute_reaction();
+        compute_reaction(h);
         commit(t, h);
         t += h;
         if (last.iterations <= 4 && depth > 0)
@@ -520,18 +520,29 @@ namespace mpm
 
   template <int dim>
   void
-  ImplicitIntegrator<dim>::compute_reaction()
+  ImplicitIntegrator<dim>::compute_reaction(const double dt)
   {
     reaction          = 0;
     boundary_reaction = 0;
     const auto &grid  = state.background;
+    using P           = transfer::P2GLayout<dim>;
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       for (unsigned int c = 0; c < dim; ++c)
         if (prescribed[i] & (1u << c))
-          (boundary_velocity && grid.on_moving_boundary(i) ? boundary_reaction :
-                                                             reaction)[c] +=
-            internal_force.local_element(i * dim + c) -
-            external_force.local_element(i * dim + c);
+          {
+            const unsigned int k = i * dim + c;
+            // Newmark: the force also accelerates the node's mass
+            const double inertia =
+              dynamic ? state.p2g.local_element(i * P::n_components + P::mass) *
+                          (new_acceleration(k, dt) +
+                           damping * (velocity_n.local_element(k) +
+                                      velocity_change(k, dt))) :
+                        0.;
+            (boundary_velocity && grid.on_moving_boundary(i) ?
+               boundary_reaction :
+               reaction)[c] += internal_force.local_element(k) -
+                               external_force.local_element(k) + inertia;
+          }
     reaction          = Utilities::MPI::sum(reaction, state.comm);
     boundary_reaction = Utilities::MPI::sum(boundary_reaction, state.comm);
   }
@@ -1244,6 +1255,24 @@ namespace mpm
     acceleration_n.update_ghost_values();
     system.apply_homogeneous_constraints(grid, velocity_n);
     system.apply_homogeneous_constraints(grid, acceleration_n);
+    // A moving boundary's nodes start from its velocity, and from the
+    // acceleration that its midpoint velocity implies, so that Newmark's
+    // v_n+1 of the prescribed increment is its velocity at the end.
+    if (boundary_velocity)
+      for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+        if (grid.on_moving_boundary(i) && prescribed[i])
+          {
+            double v[dim], v_mid[dim];
+            boundary_velocity->value(grid.node_position(i), t, v);
+            boundary_velocity->value(grid.node_position(i), t + dt / 2, v_mid);
+            for (unsigned int c = 0; c < dim; ++c)
+              if (prescribed[i] & (1u << c))
+                {
+                  velocity_n.local_element(i * dim + c) = v[c];
+                  acceleration_n.local_element(i * dim + c) =
+                    2 * (v_mid[c] - v[c]) / dt;
+                }
+          }
     return true;
   }
 

@@ -1060,11 +1060,11 @@ namespace mpm
       time.parse_parameters(prm);
       boundary.parse_parameters(prm);
       if (!boundary.moving.empty() &&
-          time.integrator != TimeStepping::Integrator::quasi_static)
+          time.integrator == TimeStepping::Integrator::explicit_dynamics)
         throw InputError(
           "Boundary conditions/Moving boundary ids: a moving grid boundary "
-          "needs Time stepping/Integrator = quasi-static (the explicit and "
-          "Newmark integrators have no prescribed grid motion yet)");
+          "needs Time stepping/Integrator = quasi-static or Newmark (the "
+          "explicit integrator has no prescribed grid motion yet)");
       shape_functions.parse_parameters(prm);
       output.parse_parameters(prm);
       checkpointing.parse_parameters(prm);

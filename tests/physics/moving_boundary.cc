@@ -1,4 +1,4 @@
-// A moving grid boundary in the quasi-static step (Boundary
+// A moving grid boundary in the implicit steps (Boundary
 // conditions/Moving boundary ids and Moving boundary velocity).
 //
 // Uniaxial strain: a linear elastic block (E = 1e6, nu = 0.3) that fills
@@ -14,6 +14,11 @@
 // particles end at (I + A dt)^4 X to round-off (each step moves the grid
 // nodes, and so the particles, by A dt x), and their stresses are one
 // uniform stress.
+//
+// Newmark: every face moves with the simple shear v = (g y, 0) the body
+// starts with, ten steps. The flow has no acceleration: the particles keep
+// their velocity g Y, end at X + g t Y, and carry one uniform stress.
+#include <algorithm>
 #include <cmath>
 
 #include "../tests.h"
@@ -156,6 +161,69 @@ end)";
   }
 } // namespace
 
+namespace
+{
+  /// Newmark: every face moves with the simple shear v = (g y, 0) that
+  /// the body starts with, ten steps. The flow has no acceleration, so the
+  /// particles keep their velocity g Y and end at X + g t Y; their stress
+  /// is uniform.
+  void
+  newmark_shear()
+  {
+    const double g = 0.05, dt = 0.01;
+    std::string  text = block<2>("", "0, 1, 2, 3", "0.05*y; 0", "0.01") + R"(
+subsection Time stepping
+  set Integrator = Newmark
+end
+subsection Bodies
+  subsection Body 0
+    set Initial velocity = 0.05*y; 0
+  end
+end)";
+    mpm_test::Case<2> c(text);
+    auto             &sim = *c.simulator;
+    for (unsigned int k = 0; k < 10; ++k)
+      sim.do_time_step(dt);
+    using L               = mpm::ParticleLayout<2>;
+    double position_error = 0, velocity_error = 0, spread = 0, scale = 0;
+    double first = std::nan("");
+    for (const auto &p : sim.particles())
+      {
+        const double *prop = p.get_properties().data();
+        const double  t    = sim.time();
+        position_error =
+          std::max({position_error,
+                    std::abs(p.get_location()[0] -
+                             (prop[L::X] + g * t * prop[L::X + 1])),
+                    std::abs(p.get_location()[1] - prop[L::X + 1])});
+        velocity_error =
+          std::max({velocity_error,
+                    std::abs(prop[L::velocity] - g * prop[L::X + 1]),
+                    std::abs(prop[L::velocity + 1])});
+        const double s_xy = prop[L::stress + 5];
+        if (std::isnan(first))
+          first = s_xy;
+        spread = std::max(spread, std::abs(s_xy - first));
+        scale  = std::max(scale, std::abs(s_xy));
+      }
+    position_error =
+      dealii::Utilities::MPI::max(position_error, MPI_COMM_WORLD);
+    velocity_error =
+      dealii::Utilities::MPI::max(velocity_error, MPI_COMM_WORLD);
+    spread = dealii::Utilities::MPI::max(spread, MPI_COMM_WORLD);
+    scale  = dealii::Utilities::MPI::max(scale, MPI_COMM_WORLD);
+    mpm_test::report(position_error < 1e-12,
+                     "Newmark shear: particles at X + g t Y (1e-12)",
+                     position_error);
+    mpm_test::report(velocity_error < 1e-10,
+                     "Newmark shear: velocities g Y (1e-10)",
+                     velocity_error);
+    mpm_test::report(spread < 1e-9 * scale,
+                     "Newmark shear: one uniform shear stress (1e-9 relative)",
+                     spread / scale);
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
@@ -163,4 +231,5 @@ main(int argc, char **argv)
   uniaxial_strain<2>();
   uniaxial_strain<3>();
   patch_test();
+  newmark_shear();
 }

@@ -195,9 +195,10 @@ namespace mpm
     find_prescribed_nodes();
     /// The force the prescribed nodes exert on the other bodies,
     /// f_int - f_ext there, summed over the ranks: the rigid bodies'
-    /// (reaction) and the moving boundary's (boundary_reaction).
+    /// (reaction) and the moving boundary's (boundary_reaction), with
+    /// Newmark's inertia of their nodes over the step @p dt.
     void
-    compute_reaction();
+    compute_reaction(const double dt);
 
     /// The increment += alpha * delta (owned entries), ghosts updated.
     void
