@@ -525,7 +525,6 @@ namespace mpm
     reaction          = 0;
     boundary_reaction = 0;
     const auto &grid  = state.background;
-    using P           = transfer::P2GLayout<dim>;
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       for (unsigned int c = 0; c < dim; ++c)
         if (prescribed[i] & (1u << c))
@@ -533,11 +532,11 @@ namespace mpm
             const unsigned int k = i * dim + c;
             // Newmark: the force also accelerates the node's mass
             const double inertia =
-              dynamic ? state.p2g.local_element(i * P::n_components + P::mass) *
-                          (new_acceleration(k, dt) +
-                           damping * (velocity_n.local_element(k) +
-                                      velocity_change(k, dt))) :
-                        0.;
+              dynamic ?
+                deformable_mass(i) * (new_acceleration(k, dt) +
+                                      damping * (velocity_n.local_element(k) +
+                                                 velocity_change(k, dt))) :
+                0.;
             (boundary_velocity && grid.on_moving_boundary(i) ?
                boundary_reaction :
                reaction)[c] += internal_force.local_element(k) -
@@ -1212,20 +1211,56 @@ namespace mpm
   }
 
   template <int dim>
+  double
+  ImplicitIntegrator<dim>::deformable_mass(const unsigned int i) const
+  {
+    using P  = transfer::P2GLayout<dim>;
+    double m = state.p2g.local_element(i * P::n_components + P::mass);
+    const unsigned int n_r = rigid_bodies.size();
+    for (unsigned int r = 0; r < n_r; ++r)
+      m -= rigid_mass.local_element(i * n_r + r);
+    return m;
+  }
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::prescribed_velocity(const unsigned int i,
+                                               const double       t,
+                                               double            *v) const
+  {
+    if (boundary_velocity && state.background.on_moving_boundary(i))
+      boundary_velocity->value(state.background.node_position(i), t, v);
+    else
+      state.bodies[rigid_bodies[prescribed_by[i]]].prescribed_velocity.value(
+        Point<dim>(), t, v);
+  }
+
+  template <int dim>
   bool
   ImplicitIntegrator<dim>::start_motion(const double t, const double dt)
   {
-    using P          = transfer::P2GLayout<dim>;
-    const auto &grid = state.background;
+    // The nodes' velocity and mass are those of the deformable bodies: a
+    // rigid body's particles move as prescribed, and its mass would
+    // otherwise resist the free directions of the nodes it shares.
+    using P                  = transfer::P2GLayout<dim>;
+    const auto         &grid = state.background;
+    const unsigned int  n_r  = rigid_bodies.size();
+    std::vector<double> v_rigid(n_r * dim);
+    for (unsigned int r = 0; r < n_r; ++r)
+      state.bodies[rigid_bodies[r]].prescribed_velocity.value(
+        Point<dim>(), t, &v_rigid[r * dim]);
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
       {
-        const double m = state.p2g.local_element(i * P::n_components + P::mass);
+        const double m = deformable_mass(i);
         for (unsigned int c = 0; c < dim; ++c)
-          velocity_n.local_element(i * dim + c) =
-            m > state.min_nodal_mass ?
-              state.p2g.local_element(i * P::n_components + P::momentum + c) /
-                m :
-              0.;
+          {
+            double p =
+              state.p2g.local_element(i * P::n_components + P::momentum + c);
+            for (unsigned int r = 0; r < n_r; ++r)
+              p -= rigid_mass.local_element(i * n_r + r) * v_rigid[r * dim + c];
+            velocity_n.local_element(i * dim + c) =
+              m > state.min_nodal_mass ? p / m : 0.;
+          }
       }
     // a_n from the balance of the stresses, loads and damping at the
     // start (the increment is zero): what the particles carry needs no
@@ -1243,7 +1278,7 @@ namespace mpm
     acceleration_n = 0.;
     for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
       {
-        const double m = state.p2g.local_element(i * P::n_components + P::mass);
+        const double m = deformable_mass(i);
         if (m > state.min_nodal_mass)
           for (unsigned int c = 0; c < dim; ++c)
             acceleration_n.local_element(i * dim + c) =
@@ -1255,24 +1290,24 @@ namespace mpm
     acceleration_n.update_ghost_values();
     system.apply_homogeneous_constraints(grid, velocity_n);
     system.apply_homogeneous_constraints(grid, acceleration_n);
-    // A moving boundary's nodes start from its velocity, and from the
-    // acceleration that its midpoint velocity implies, so that Newmark's
-    // v_n+1 of the prescribed increment is its velocity at the end.
-    if (boundary_velocity)
-      for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
-        if (grid.on_moving_boundary(i) && prescribed[i])
-          {
-            double v[dim], v_mid[dim];
-            boundary_velocity->value(grid.node_position(i), t, v);
-            boundary_velocity->value(grid.node_position(i), t + dt / 2, v_mid);
-            for (unsigned int c = 0; c < dim; ++c)
-              if (prescribed[i] & (1u << c))
-                {
-                  velocity_n.local_element(i * dim + c) = v[c];
-                  acceleration_n.local_element(i * dim + c) =
-                    2 * (v_mid[c] - v[c]) / dt;
-                }
-          }
+    // The prescribed directions of a moving boundary's or a rigid body's
+    // nodes start from its velocity, and from the acceleration that its
+    // midpoint velocity implies, so that Newmark's v_n+1 of the
+    // prescribed increment is its velocity at the end.
+    for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
+      if (prescribed[i])
+        {
+          double v[dim], v_mid[dim];
+          prescribed_velocity(i, t, v);
+          prescribed_velocity(i, t + dt / 2, v_mid);
+          for (unsigned int c = 0; c < dim; ++c)
+            if (prescribed[i] & (1u << c))
+              {
+                velocity_n.local_element(i * dim + c) = v[c];
+                acceleration_n.local_element(i * dim + c) =
+                  2 * (v_mid[c] - v[c]) / dt;
+              }
+        }
     return true;
   }
 
@@ -1283,7 +1318,6 @@ namespace mpm
     // The lumped mass's force m (a_n+1 + c v_n+1) and its derivative
     // m (1 / (beta dt^2) + c gamma / (beta dt)) by the increment, on the
     // owned nodes (each once).
-    using P = transfer::P2GLayout<dim>;
     const double stiffness =
       1 / (beta * dt * dt) + damping * gamma / (beta * dt);
     double             norm2 = 0;
@@ -1294,7 +1328,7 @@ namespace mpm
       {
         if (!active[i])
           continue;
-        const double m = state.p2g.local_element(i * P::n_components + P::mass);
+        const double m = deformable_mass(i);
         for (unsigned int c = 0; c < dim; ++c)
           {
             const unsigned int k = i * dim + c;
@@ -1378,8 +1412,15 @@ namespace mpm
             if (!state.bodies[b].is_rigid())
               continue;
             p.set_location(rigid_start[k++] + u[b]);
+            // (Newmark: the velocity at the end of the step, which the
+            // next step's nodal momentum takes out again)
+            double v_end[dim];
+            if (dynamic)
+              state.bodies[b].prescribed_velocity.value(Point<dim>(),
+                                                        t + dt,
+                                                        v_end);
             for (unsigned int c = 0; c < dim; ++c)
-              prop[L::velocity + c] = u[b][c] / dt;
+              prop[L::velocity + c] = dynamic ? v_end[c] : u[b][c] / dt;
           }
       }
     TimerOutput::Scope timer(state.timer, "position update");

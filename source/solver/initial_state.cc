@@ -127,14 +127,14 @@ namespace mpm
                              "rigid"));
         if (rigid)
           {
-            if (params.time.integrator !=
-                  Parameters::TimeStepping::Integrator::quasi_static &&
+            if (params.time.integrator ==
+                  Parameters::TimeStepping::Integrator::explicit_dynamics &&
                 !params.contact.enabled())
               throw InputError(where +
                                "/Prescribed velocity: a body of prescribed "
                                "motion needs Time stepping/Integrator = "
-                               "quasi-static, or a Contact/Contact law "
-                               "other than none");
+                               "quasi-static or Newmark, or a Contact/Contact "
+                               "law other than none");
             body.prescribed_velocity =
               Expression<dim>(body.prm.prescribed_velocity,
                               dim,

@@ -183,6 +183,15 @@ namespace mpm
                    gamma * new_acceleration(k, dt));
     }
 
+    /// Newmark: the mass of the deformable bodies at node @p i
+    /// (node-local), without the rigid bodies'.
+    double
+    deformable_mass(const unsigned int i) const;
+    /// The velocity at time @p t of what prescribes node @p i's motion
+    /// (its moving boundary or its rigid body, prescribed_by).
+    void
+    prescribed_velocity(const unsigned int i, const double t, double *v) const;
+
     /// The displacement of rigid body @p r (index into rigid_bodies) from
     /// t to t + dt (midpoint rule).
     dealii::Tensor<1, dim>
