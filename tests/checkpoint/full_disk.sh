@@ -25,14 +25,17 @@ run_mpm() {
   else timeout 300 "$mpm" "$@"; fi
 }
 fail() { echo "FAIL: $*"; exit 1; }
+here=$(pwd)
+# The screen goes outside the small file system: written into it, it
+# could be cut off by the very shortage the run reports.
+screen=$here/screen.txt
 # Runs case.prm in $disk; fails (showing the screen) unless mpm stopped
 # with status 2. $1 names the case in the failure.
 expect_status_2() {
-  (cd "$disk" && run_mpm case.prm > screen.txt 2>&1)
+  (cd "$disk" && run_mpm case.prm > "$screen" 2>&1)
   local rc=$?
-  [ "$rc" = 2 ] || { cat "$disk/screen.txt"; fail "$1: exit status $rc, expected 2"; }
+  [ "$rc" = 2 ] || { cat "$screen"; fail "$1: exit status $rc, expected 2"; }
 }
-here=$(pwd)
 disk=$here/disk
 # a mount left by an interrupted run (possibly stacked) is taken down
 unmount_all() { while mountpoint -q "$disk" 2>/dev/null; do umount "$disk" || break; done; }
@@ -65,11 +68,11 @@ size_kb=$((checkpoint_kb * 2 + 32))
 mount -t tmpfs -o size=${size_kb}k tmpfs "$disk" || fail "mount"
 cp ref/case.prm "$disk/"
 expect_status_2 "full disk"
-grep -q "while writing the checkpoint of step [0-9]*: no room on the disk: about .* MB are needed in 'results', the file system has .* MB free" "$disk/screen.txt" \
-  || { cat "$disk/screen.txt"; fail "full disk: the message names neither the checkpoint nor the free space"; }
-grep -q "is intact" "$disk/screen.txt" \
-  || { cat "$disk/screen.txt"; fail "full disk: the message does not name the intact checkpoint"; }
-echo "OK   checkpoint on a full disk: status 2, $(grep -o 'the checkpoint of step.*free' "$disk/screen.txt")"
+grep -q "while writing the checkpoint of step [0-9]*: no room on the disk: about .* MB are needed in 'results', the file system has .* MB free" "$screen" \
+  || { cat "$screen"; fail "full disk: the message names neither the checkpoint nor the free space"; }
+grep -q "is intact" "$screen" \
+  || { cat "$screen"; fail "full disk: the message does not name the intact checkpoint"; }
+echo "OK   checkpoint on a full disk: status 2, $(grep -o 'the checkpoint of step.*free' "$screen")"
 
 mount -o remount,size=$((size_kb * 4))k "$disk" || fail "remount"
 (cd "$disk" && run_mpm --resume case.prm > screen2.txt 2>&1) \
@@ -90,9 +93,9 @@ subsection Checkpointing
 end
 P
 expect_status_2 "vtu on a full disk"
-grep -q "cannot write .* in 'results' (the file system of 'results' has" "$disk/screen.txt" \
-  || { cat "$disk/screen.txt"; fail "vtu on a full disk: the message does not name the directory and its free space"; }
-echo "OK   output on a full disk: status 2, $(grep -o "cannot write [^:]*" "$disk/screen.txt" | head -1)"
+grep -q "cannot write .* in 'results' (the file system of 'results' has" "$screen" \
+  || { cat "$screen"; fail "vtu on a full disk: the message does not name the directory and its free space"; }
+echo "OK   output on a full disk: status 2, $(grep -o "cannot write [^:]*" "$screen" | head -1)"
 
 # 5. A disk that fills during the checkpoint, after the check: a file
 #    system with room for bytes but few file entries, swept over the
@@ -107,9 +110,9 @@ sweep() {
     mount -t tmpfs -o size=20m,nr_inodes=$entries tmpfs "$disk" || fail "mount"
     cp ref/case.prm "$disk/"
     expect_status_2 "$entries file entries"
-    grep -q "mpm: the simulation stopped while \(opening the output\|writing the checkpoint of step [0-9]*\): .*\(results\|No space\)" "$disk/screen.txt" \
-      || { cat "$disk/screen.txt"; fail "$entries file entries: the message names no folder"; }
-    grep -q "p4est stopped on a failed write" "$disk/screen.txt" && seen_p4est=1
+    grep -q "mpm: the simulation stopped while \(opening the output\|writing the checkpoint of step [0-9]*\): .*\(results\|No space\)" "$screen" \
+      || { cat "$screen"; fail "$entries file entries: the message names no folder"; }
+    grep -q "p4est stopped on a failed write" "$screen" && seen_p4est=1
     umount "$disk"
   done
 }
