@@ -53,10 +53,11 @@ namespace mpm
   }
 
   template <int dim>
-  std::vector<typename GhostPenalty<dim>::Face>
-  GhostPenalty<dim>::assembled_faces(const BackgroundGrid<dim> &grid) const
+  void
+  GhostPenalty<dim>::reinit(const BackgroundGrid<dim> &grid)
   {
-    std::vector<Face> list;
+    candidates.clear();
+    faces.clear();
     for (const auto &cell : grid.owned_cells())
       for (const unsigned int f : cell->face_indices())
         {
@@ -70,9 +71,8 @@ namespace mpm
                                   c < nb :
                                   cell->subdomain_id() < neighbor->subdomain_id();
           if (mine)
-            list.push_back({c, f, nb});
+            candidates.push_back({c, f, nb});
         }
-    return list;
   }
 
   template <int dim>
@@ -83,7 +83,7 @@ namespace mpm
     if (!enabled())
       return groups;
     constexpr unsigned int nv = BackgroundGrid<dim>::n_vertices;
-    for (const Face &face : assembled_faces(grid))
+    for (const Face &face : candidates)
       {
         groups.nodes.insert(groups.nodes.end(),
                             grid.nodes(face.cell),
@@ -121,7 +121,7 @@ namespace mpm
         return support.local_element(i) < 0.25 * full_support.local_element(i);
       });
     };
-    for (const Face &face : assembled_faces(grid))
+    for (const Face &face : candidates)
       if (all_active(face.cell) && all_active(face.neighbor) &&
           (weak(face.cell) || weak(face.neighbor)))
         faces.push_back(face);
@@ -129,9 +129,9 @@ namespace mpm
 
   template <int dim>
   void
-  GhostPenalty<dim>::select_all_faces(const BackgroundGrid<dim> &grid)
+  GhostPenalty<dim>::select_all_faces()
   {
-    faces = assembled_faces(grid);
+    faces = candidates;
   }
 
   template <int dim>
@@ -172,6 +172,9 @@ namespace mpm
     normal_ref[d] = side > 0 ? 1. : -1.;
     Tensor<1, dim>      grad_own[nv], grad_other[nv];
     std::vector<double> jump(n);
+    Point<dim>          centre; // the start of the inverse map
+    for (unsigned int e = 0; e < dim; ++e)
+      centre[e] = 0.5;
     for (unsigned int q = 0; q < (1u << (dim - 1)); ++q)
       {
         Point<dim> xi;
@@ -188,12 +191,9 @@ namespace mpm
         const Tensor<2, dim> J = own.jacobian(xi);
         const Tensor<1, dim> area =
           determinant(J) * (transpose(invert(J)) * normal_ref);
-        const double         ds     = area.norm() * weight;
-        const Tensor<1, dim> normal = area / area.norm();
-        Point<dim>           centre;
-        for (unsigned int e = 0; e < dim; ++e)
-          centre[e] = 0.5;
-        const Point<dim> xi_other = other.inverse_map(own.map(xi), centre);
+        const double         ds       = area.norm() * weight;
+        const Tensor<1, dim> normal   = area / area.norm();
+        const Point<dim>     xi_other = other.inverse_map(own.map(xi), centre);
         own.gradients(xi, grad_own);
         other.gradients(xi_other, grad_other);
         // [[dN_a/dn]] = dN_a/dn from the cell minus that from the neighbour

@@ -254,7 +254,8 @@ namespace mpm
     if (partition != state.background.node_partitioner())
       {
         TimerOutput::Scope t(state.timer, "implicit set-up");
-        partition   = state.background.node_partitioner();
+        partition = state.background.node_partitioner();
+        ghost_penalty.reinit(state.background);
         face_groups = ghost_penalty.couplings(state.background);
         system.reinit(state.background, state.comm, face_groups);
         stencils = CellStencils<dim>(state.background.n_local_nodes());
@@ -383,17 +384,18 @@ namespace mpm
     find_prescribed_nodes();
     std::vector<Tensor<1, dim>> values(grid.n_local_nodes());
     for (unsigned int i = 0; i < grid.n_local_nodes(); ++i)
-      if (boundary_velocity && grid.on_moving_boundary(i) && active[i])
-        {
-          // (the boundary's motion wins over a rigid body's)
-          double v[dim];
-          boundary_velocity->value(grid.node_position(i), t + dt / 2, v);
+      {
+        // (the boundary's motion wins over a rigid body's)
+        if (moves_with_boundary(i) && active[i])
           prescribed[i] = (1u << dim) - 1;
-          for (unsigned int c = 0; c < dim; ++c)
-            values[i][c] = v[c] * dt;
-        }
-      else if (prescribed[i])
-        values[i] = rigid_displacement(prescribed_by[i], t, dt);
+        if (!prescribed[i])
+          continue;
+        // the midpoint rule, as rigid_displacement()
+        double v[dim];
+        prescribed_velocity(i, t + dt / 2, v);
+        for (unsigned int c = 0; c < dim; ++c)
+          values[i][c] = v[c] * dt;
+      }
     system.build_constraints(grid, active, prescribed, values);
     increment = 0.;
   }
@@ -537,10 +539,9 @@ namespace mpm
                                       damping * (velocity_n.local_element(k) +
                                                  velocity_change(k, dt))) :
                 0.;
-            (boundary_velocity && grid.on_moving_boundary(i) ?
-               boundary_reaction :
-               reaction)[c] += internal_force.local_element(k) -
-                               external_force.local_element(k) + inertia;
+            (moves_with_boundary(i) ? boundary_reaction : reaction)[c] +=
+              internal_force.local_element(k) -
+              external_force.local_element(k) + inertia;
           }
     reaction          = Utilities::MPI::sum(reaction, state.comm);
     boundary_reaction = Utilities::MPI::sum(boundary_reaction, state.comm);
@@ -1228,7 +1229,7 @@ namespace mpm
                                                const double       t,
                                                double            *v) const
   {
-    if (boundary_velocity && state.background.on_moving_boundary(i))
+    if (moves_with_boundary(i))
       boundary_velocity->value(state.background.node_position(i), t, v);
     else
       state.bodies[rigid_bodies[prescribed_by[i]]].prescribed_velocity.value(

@@ -95,7 +95,8 @@ namespace
   {
     const auto        grid = make_grid<dim>(distortion);
     GhostPenalty<dim> g(scale);
-    g.select_all_faces(*grid);
+    g.reinit(*grid);
+    g.select_all_faces();
     BOOST_REQUIRE(g.n_faces() > 0);
     Tensor<1, dim> a;
     Tensor<2, dim> B;
@@ -141,7 +142,8 @@ namespace
     // the plane x = x_k through the second interior vertex line
     const auto        grid = make_grid<dim>(0);
     GhostPenalty<dim> g(scale);
-    g.select_all_faces(*grid);
+    g.reinit(*grid);
+    g.select_all_faces();
     const double x_k  = -0.3 + 2 * 0.25;
     const auto   kink = interpolate<dim>(*grid, [&](const Point<dim> &x) {
       Tensor<1, dim> u;
@@ -186,7 +188,8 @@ BOOST_AUTO_TEST_CASE(faces_of_weakly_covered_cells)
   // fully, every node an unknown.
   const auto      grid = make_grid<2>(0);
   GhostPenalty<2> g(scale);
-  NodalVector     support, full;
+  g.reinit(*grid);
+  NodalVector support, full;
   grid->initialize_vector(support, 1);
   grid->initialize_vector(full, 1);
   full    = 1.;

@@ -42,7 +42,7 @@ namespace mpm
     struct BoundaryConditions
     {
       std::vector<dealii::types::boundary_id> fixed, slip;
-      /// Ids whose nodes move with `velocity` (quasi-static step only).
+      /// Ids whose nodes move with `moving_velocity` (the implicit steps).
       std::vector<dealii::types::boundary_id> moving;
       std::string                             moving_velocity;
       bool                                    remove_lost_particles = false;

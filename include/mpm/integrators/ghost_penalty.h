@@ -50,6 +50,11 @@ namespace mpm
       return scale > 0;
     }
 
+    /// The faces this rank may assemble on the grid's current partition
+    /// (again after every repartition).
+    void
+    reinit(const BackgroundGrid<dim> &grid);
+
     /// The nodes of the two cells of every face this rank may assemble:
     /// the couplings the sparsity needs (on top of the cells').
     typename NodalLinearSystem<dim>::NodeGroups
@@ -66,7 +71,7 @@ namespace mpm
 
     /// Every face this rank may assemble (tests).
     void
-    select_all_faces(const BackgroundGrid<dim> &grid);
+    select_all_faces();
 
     /// Faces selected on this rank.
     unsigned int
@@ -99,10 +104,6 @@ namespace mpm
       unsigned int cell, face, neighbor;
     };
 
-    /// The faces of the owned cells that this rank assembles.
-    std::vector<Face>
-    assembled_faces(const BackgroundGrid<dim> &grid) const;
-
     /// The face's nodes (the cell's vertices, then the neighbour's others)
     /// and the scalar matrix M of g (the vector form is M (x) I).
     void
@@ -111,7 +112,8 @@ namespace mpm
                 std::vector<unsigned int>  &nodes,
                 dealii::FullMatrix<double> &M) const;
 
-    double            scale = 0; ///< beta E
-    std::vector<Face> faces;     ///< this step's
+    double            scale = 0;  ///< beta E
+    std::vector<Face> candidates; ///< that this rank assembles (reinit())
+    std::vector<Face> faces;      ///< this step's
   };
 } // namespace mpm

@@ -187,6 +187,13 @@ namespace mpm
     /// (node-local), without the rigid bodies'.
     double
     deformable_mass(const unsigned int i) const;
+    /// Whether node @p i (node-local) is a moving boundary's: its
+    /// prescribed directions follow the boundary, not a rigid body.
+    bool
+    moves_with_boundary(const unsigned int i) const
+    {
+      return boundary_velocity && state.background.on_moving_boundary(i);
+    }
     /// The velocity at time @p t of what prescribes node @p i's motion
     /// (its moving boundary or its rigid body, prescribed_by).
     void
