@@ -1,9 +1,11 @@
 #!/usr/bin/python3
 """Strip footing load-settlement curves from scripts/strip_footing_study.sh
-output (OUT/<variant>_<h>.txt: settlement/B, q/c_u): standard MPM and
-theta-bar on every grid of the study, with Prandtl's limit (2 + pi) c_u,
+output (OUT/<variant>_<h>.txt: settlement/B, q/c_u): standard MPM,
+theta-bar and the filter on every grid of the study, with Prandtl's limit (2 + pi) c_u,
 one panel per shape-function family (variant names remedy-family, e.g.
-theta-bar-CPDI; no suffix: standard). A curve ends where its run stopped.
+theta-bar-CPDI; no suffix: standard; the suffixes -fixed, Implicit
+solver/Geometry = fixed, and -graded, the graded grids, make panels of
+their own). A curve ends where its run stopped.
 Usage: plot_strip_footing.py STUDY_DIR OUT.png"""
 import glob
 import math
@@ -17,7 +19,7 @@ import matplotlib.pyplot as plt
 import pandas as pd
 
 study, out = sys.argv[1], sys.argv[2]
-styles = {"standard": "C3", "theta-bar": "C0"}
+styles = {"standard": "C3", "theta-bar": "C0", "filter": "C2"}
 curves = {}  # family -> [(remedy, h, file)]
 for f in glob.glob(f"{study}/*_*.txt"):
     variant, h = os.path.basename(f)[:-4].rsplit("_", 1)
@@ -34,7 +36,7 @@ for ax, family in zip(axes[0], families):
                       key=lambda c: -c[1])
         for k, (_, h, f) in enumerate(runs):
             d = pd.read_csv(f, sep=r"\s+")
-            ax.plot(d.settlement_over_B, d.q_over_cu, ["-", "--", ":"][k % 3],
+            ax.plot(d.settlement_over_B, d.q_over_cu, ["-", "--", ":", "-."][k % 4],
                     color=styles[remedy], label=f"{remedy}, h = {h:g} B")
     ax.axhline(2 + math.pi, color="k", lw=0.8)
     ax.text(0.01, 2 + math.pi + 0.1, "Prandtl: (2 + $\\pi$) $c_u$")
@@ -43,7 +45,14 @@ for ax, family in zip(axes[0], families):
     ax.set_xlim(0, 0.5)
     ax.set_ylim(0, 12)
     ax.legend(loc="lower right")
-    ax.set_title(f"{family} MPM" if family == "standard" else family)
+    parts = family.split("-")
+    title = "-".join(p for p in parts if p not in ("fixed", "graded"))
+    title = "standard MPM" if title in ("", "standard") else title
+    if "fixed" in parts:
+        title += ", fixed geometry"
+    if "graded" in parts:
+        title += ", graded grids (h: finest cells)"
+    ax.set_title(title)
 fig.suptitle("smooth rigid strip footing, von Mises, $\\nu$ = 0.49, quasi-static")
 fig.tight_layout()
 fig.savefig(out, dpi=120)

@@ -4,8 +4,9 @@
 # 0.25, 0.125, 0.0625 (B = 1), loaded by the footing's settlement in
 # steps of 0.01 B up to 0.5 B. Writes OUT/<variant>_<h>.txt (settlement/B,
 # q/c_u = -2 reaction_y/(B c_u)) and prints, per run, q/c_u at settlement
-# 0.05, 0.1, 0.2 B and at the last converged step, the settlement reached,
-# the Newton iterations and the wall time. A run whose Newton iteration
+# 0.05, 0.1, 0.2 B and at the last converged step, its largest value (with
+# Geometry = fixed the limit load of the discretization) and where, the
+# settlement reached, the Newton iterations and the wall time. A run whose Newton iteration
 # fails after every step cut stops there; its curve ends at that point.
 # Prandtl's limit: q/c_u = 2 + pi = 5.142. Figure:
 # scripts/plot_strip_footing.py OUT doc/figures/strip_footing.png (the
@@ -21,6 +22,15 @@
 # Implicit solver/Ghost penalty; theta-bar runs with Particle volume =
 # smoothed unless PARTICLE_VOLUME=own. MIN_J=1 writes the particle tables
 # and adds the smallest volume ratio V/V0 of the soil at 0.2 B.
+# GEOMETRY=fixed runs with Implicit solver/Geometry = fixed (equilibrium
+# in the undeformed shape, the small-deformation analysis) and appends
+# -fixed to the variant's name. END (default 0.5) is the last
+# settlement / B, STEP (default 0.01) the load step / B. GRID=graded takes each h as the cell size on the region
+# of the collapse mechanism only, the cells growing towards the far walls
+# (scripts/make_strip_footing_grid.py; the soil then is that grid's
+# cells below its surface), and appends -graded to the variant's name.
+# STIFFNESS (default the parameter file's 100) sets the soil's E / c_u and
+# appends -E<value> to the variant's name.
 # Usage: scripts/strip_footing_study.sh [OUT] [h values...]   (MPM=...)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -29,11 +39,11 @@ out=$(realpath -m "${1:-results/strip_footing}")
 shift || true
 mkdir -p "$out"
 if [ -n "${MIN_J:-}" ]; then
-  echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | settlement reached / B | Newton | wall [s] | smallest V/V0 at 0.2 B |"
-  echo "|---|---|---|---|---|---|---|---|---|---|"
+  echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | largest (at settlement / B) | settlement reached / B | Newton | wall [s] | smallest V/V0 at 0.2 B |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
 else
-  echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | settlement reached / B | Newton | wall [s] |"
-  echo "|---|---|---|---|---|---|---|---|---|"
+  echo "| variant | h | q/c_u at 0.05 B | 0.1 B | 0.2 B | last | largest (at settlement / B) | settlement reached / B | Newton | wall [s] |"
+  echo "|---|---|---|---|---|---|---|---|---|---|"
 fi
 for h in ${@:-0.25 0.125 0.0625}; do
   read -r nx ny ns nf <<< "$(python3 -c "print(round(5/$h), round(6.25/$h), round(5/$h), round(0.5/$h))")"
@@ -46,11 +56,41 @@ for h in ${@:-0.25 0.125 0.0625}; do
     [ $remedy = filter ] && filter="assumed stress"
     variant=$remedy
     [ $family = standard ] || variant=$remedy-$family
+    [ "${GEOMETRY:-updated}" = fixed ] && variant=$variant-fixed
+    stiffness=""
+    if [ -n "${STIFFNESS:-}" ]; then
+      variant=$variant-E$STIFFNESS
+      stiffness="subsection Material
+      subsection Von Mises plasticity
+        set Young's modulus = $STIFFNESS*cu
+      end
+    end"
+    fi
+    grid_section="subsection Grid
+  set Subdivisions = $nx, $ny
+end"
+    soil_section="set Subdivisions = $ns, $ns"
+    footing_cells=$nf
+    if [ "${GRID:-uniform}" = graded ]; then
+      variant=$variant-graded
+      mkdir -p "$out/mesh_$h"
+      python3 "$root/scripts/make_strip_footing_grid.py" "$out/mesh_$h/grid.ucd" \
+        "$out/mesh_$h/soil.ucd" "$h" > /dev/null
+      grid_section="subsection Grid
+  set Type = mesh file
+  set Mesh file = $out/mesh_$h/grid.ucd
+end"
+      soil_section="set Geometry = mesh file
+    set Mesh file = $out/mesh_$h/soil.ucd"
+      footing_cells=$((4 * nf))
+    fi
     dir="$out/${variant}_$h"
     cat > "$out/case.prm" <<PRM
 include $root/prm/strip_footing.prm
-subsection Grid
-  set Subdivisions = $nx, $ny
+$grid_section
+subsection Time stepping
+  set End time = ${END:-0.5}
+  set Time step = ${STEP:-0.01}
 end
 subsection Shape functions
   set Family = $family
@@ -58,17 +98,19 @@ subsection Shape functions
 end
 subsection Output
   set Directory = $dir
-  set Interval = 0.01
+  set Interval = ${STEP:-0.01}
   set Write vtu = false
   set Write csv = $([ -n "${MIN_J:-}" ] && echo true || echo false)
 end
 subsection Implicit solver
   set Preconditioner = $preconditioner
   set Ghost penalty = ${GHOST:-0.01}
+  set Geometry = ${GEOMETRY:-updated}
 end
 subsection Bodies
   subsection Body 0
-    set Subdivisions = $ns, $ns
+    $soil_section
+    $stiffness
     subsection Locking remedies
       set Volumetric smoothing = $smoothing
       set Stress filter = $filter
@@ -78,7 +120,7 @@ subsection Bodies
   end
   subsection Body 1
     set Upper corner = 0.5, $(python3 -c "print(5 + $h)")
-    set Subdivisions = $nf, 1
+    set Subdivisions = $footing_cells, 1
   end
 end
 PRM
@@ -112,8 +154,10 @@ if table and os.path.exists(table):
     j = [float(r["volume"]) / float(r["volume0"]) for r in csv.DictReader(open(table))
          if int(float(r["body"])) == 0]
     min_j = f" {min(j):.3f} |"
+peak = max(pts, key=lambda p: p[1])
 print(f"| {variant} | {h} | {at(0.05)} | {at(0.1)} | {at(0.2)} | "
-      f"{pts[-1][1]:.3f} | {pts[-1][0]:.2f} | {newton} | {wall} |{min_j}")
+      f"{pts[-1][1]:.3f} | {peak[1]:.3f} ({peak[0]:.2f}) | {pts[-1][0]:.2f} | "
+      f"{newton} | {wall} |{min_j}")
 PY
   done
   done

@@ -1371,14 +1371,20 @@ namespace mpm
                                          c) =
             dynamic ? velocity_change(k, dt) : 0.;
         }
-    // A rigid body moves as prescribed, not with the grid.
-    using L = ParticleLayout<dim>;
-    std::vector<Point<dim>> rigid_start;
-    if (!rigid_bodies.empty())
+    // A rigid body moves as prescribed, not with the grid; with a fixed
+    // geometry no particle moves.
+    using L          = ParticleLayout<dim>;
+    const bool fixed = state.params.implicit.fixed_geometry;
+    const auto rigid = [&](const auto &p) {
+      return state
+        .bodies[static_cast<unsigned int>(p.get_properties()[L::body])]
+        .is_rigid();
+    };
+    std::vector<Point<dim>> start;
+    if (fixed || !rigid_bodies.empty())
       for (const auto &p : state.particle_handler)
-        if (state.bodies[static_cast<unsigned int>(p.get_properties()[L::body])]
-              .is_rigid())
-          rigid_start.push_back(p.get_location());
+        if (fixed || rigid(p))
+          start.push_back(p.get_location());
     // G2P and the stress update see the domains of the start of the step
     // (the stress update changes F, from which cpGIMP and CPDI take them).
     {
@@ -1400,7 +1406,7 @@ namespace mpm
         TimerOutput::Scope timer(state.timer, "stress filter");
         state.stress_filter->apply(grid, state.particle_handler);
       }
-    if (!rigid_bodies.empty())
+    if (fixed || !rigid_bodies.empty())
       {
         std::vector<Tensor<1, dim>> u(state.bodies.size());
         for (unsigned int r = 0; r < rigid_bodies.size(); ++r)
@@ -1408,11 +1414,13 @@ namespace mpm
         unsigned int k = 0;
         for (auto &p : state.particle_handler)
           {
+            if (!fixed && !rigid(p))
+              continue;
             double            *prop = p.get_properties().data();
             const unsigned int b    = static_cast<unsigned int>(prop[L::body]);
+            p.set_location(fixed ? start[k++] : start[k++] + u[b]);
             if (!state.bodies[b].is_rigid())
               continue;
-            p.set_location(rigid_start[k++] + u[b]);
             // (Newmark: the velocity at the end of the step, which the
             // next step's nodal momentum takes out again)
             double v_end[dim];
@@ -1425,7 +1433,8 @@ namespace mpm
           }
       }
     TimerOutput::Scope timer(state.timer, "position update");
-    if (shape_functions::family_traits(state.params.shape_functions.family)
+    if (!fixed &&
+        shape_functions::family_traits(state.params.shape_functions.family)
           .tracks_corners)
       state.local_error.record(
         transfer::move_domain_corners(grid,

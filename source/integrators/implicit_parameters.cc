@@ -139,6 +139,20 @@ namespace mpm
         "displacement by a few tenths of a percent "
         "(doc/guide/implicit.md). Needs a body with a Young's modulus. "
         "The explicit integrator ignores it.");
+      prm.declare_entry(
+        "Geometry",
+        "updated",
+        Selection("updated|fixed"),
+        "updated: each converged step moves the particles and their "
+        "domains (updated-Lagrangian, large deformation). fixed: the "
+        "particles, their domains and the bodies of prescribed motion stay "
+        "where the run starts, and every step finds equilibrium in that "
+        "undeformed shape, the small-deformation analysis of finite "
+        "elements: a limit load without the change of shape that a large "
+        "settlement brings (doc/guide/implicit.md). The material is updated "
+        "as with updated: F and the volumes accumulate the steps' "
+        "increments. Not with a family whose domain follows F (cpGIMP, "
+        "CPDI), nor with Integrator = explicit.");
       prm.leave_subsection();
     }
 
@@ -166,6 +180,7 @@ namespace mpm
       max_linear_iterations = prm.get_integer("Maximum linear iterations");
       min_nodal_support     = prm.get_double("Minimum nodal support");
       ghost_penalty         = prm.get_double("Ghost penalty");
+      fixed_geometry        = prm.get("Geometry") == "fixed";
       prm.leave_subsection();
       if (!(residual_tolerance > 0) && !(absolute_residual_tolerance > 0))
         throw InputError("Implicit solver: Residual tolerance and Absolute "

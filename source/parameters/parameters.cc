@@ -1071,6 +1071,12 @@ namespace mpm
       checkpointing.parse_parameters(prm);
       load_balancing.parse_parameters(prm);
       implicit.parse_parameters(prm);
+      if (implicit.fixed_geometry &&
+          time.integrator == TimeStepping::Integrator::explicit_dynamics)
+        throw InputError(
+          "Implicit solver/Geometry = fixed needs Time stepping/Integrator = "
+          "quasi-static or Newmark (the explicit step always moves the "
+          "particles)");
       bodies.resize(n_bodies);
       const ConstantsScope scope(constants);
       contact.parse_parameters(prm);

@@ -49,6 +49,15 @@ namespace mpm
           "): with the standard Q1 functions the affine transfer C_p = sum_i "
           "v_i grad N_ip extrapolates the bilinear mode beyond the cell and "
           "the step is unstable (doc/theory/apic.md)");
+      if (use.fixed_geometry && domain_follows_deformation)
+        throw InputError(
+          "Implicit solver/Geometry = fixed keeps the particles' domains as "
+          "they start, and " +
+          what + " computes each domain from F; use " +
+          names_of([](const FamilyTraits &f) {
+            return !f.domain_follows_deformation;
+          }) +
+          " there");
     }
   } // namespace shape_functions
 } // namespace mpm

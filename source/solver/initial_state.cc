@@ -173,7 +173,9 @@ namespace mpm
                   });
     for (auto &body : state.bodies)
       body.face_offset_slot = state.layout.traction_offset();
-    family.check({state.background.is_cartesian(), params.time.apic});
+    family.check({state.background.is_cartesian(),
+                  params.time.apic,
+                  params.implicit.fixed_geometry});
   }
 
   template <int dim>

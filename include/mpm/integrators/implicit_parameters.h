@@ -42,6 +42,9 @@ namespace mpm
       double       min_nodal_support     = 1e-4;
       /// beta of the ghost penalty on weakly covered cells (0: off)
       double ghost_penalty = 0;
+      /// Geometry = fixed: the particles and their domains stay where the
+      /// run starts (equilibrium in the undeformed shape)
+      bool fixed_geometry = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

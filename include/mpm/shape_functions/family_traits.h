@@ -32,6 +32,7 @@ namespace mpm
     {
       bool axis_parallel_grid; ///< every cell an axis-parallel box
       bool apic;               ///< Velocity transfer = APIC
+      bool fixed_geometry;     ///< Implicit solver/Geometry = fixed
     };
 
     /**

@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""A graded background grid for the strip footing (prm/strip_footing.prm)
+and the soil's body mesh, as UCD files: axis-parallel cells of size h on
+the region of the collapse mechanism, [0, 1.75] x [4, 5.5] (B = 1, footing
+half width 0.5 at x = 0, soil surface y = 5), growing by at most 1.25 per
+cell towards the far walls (x = 5, y = 0) and the grid's top (y = 6.25).
+The grid's faces get the boundary ids of a box: 0 at x = 0, 1 at x = 5,
+2 at y = 0, 3 at y = 6.25. BODY.ucd holds the grid's cells below y = 5,
+so that each soil particle sits in a grid cell as a quadrature point in a
+finite element (2 x 2 per cell with Particles per direction = 2).
+Prints the cell counts. Usage: make_strip_footing_grid.py GRID.ucd
+BODY.ucd h"""
+import math
+import sys
+
+grid_path, body_path, h = sys.argv[1], sys.argv[2], float(sys.argv[3])
+ratio = 1.25
+
+
+def graded(length, h):
+    """Cell sizes growing from about h by the factor 1.25 over `length`,
+    scaled to sum to it exactly."""
+    n = max(1, math.ceil(math.log(1 + length * (ratio - 1) / (h * ratio))
+                         / math.log(ratio)))
+    sizes = [h * ratio ** (k + 1) for k in range(n)]
+    scale = length / sum(sizes)
+    return [s * scale for s in sizes]
+
+
+def uniform(length, h):
+    n = round(length / h)
+    if abs(n * h - length) > 1e-12 * length:
+        sys.exit(f"make_strip_footing_grid.py: h = {h} does not divide {length}")
+    return [h] * n
+
+
+def coordinates(start, sizes):
+    x = [start]
+    for s in sizes:
+        x.append(x[-1] + s)
+    return x
+
+
+xs = coordinates(0.0, uniform(1.75, h) + graded(3.25, h))
+ys = coordinates(0.0, list(reversed(graded(4.0, h))) + uniform(1.5, h) +
+                 graded(0.75, h))
+xs[-1], ys[-1] = 5.0, 6.25
+surface = min(range(len(ys)), key=lambda j: abs(ys[j] - 5.0))
+assert abs(ys[surface] - 5.0) < 1e-9
+ys[surface] = 5.0
+nx, ny = len(xs) - 1, len(ys) - 1
+
+
+def write(path, rows, faces):
+    """The first `rows` rows of cells, and with `faces` the boundary
+    lines with their ids."""
+    node = lambda i, j: j * (nx + 1) + i + 1
+    lines = []
+    if faces:
+        for i in range(nx):
+            lines.append((2, node(i, 0), node(i + 1, 0)))
+            lines.append((3, node(i + 1, rows), node(i, rows)))
+        for j in range(rows):
+            lines.append((0, node(0, j + 1), node(0, j)))
+            lines.append((1, node(nx, j), node(nx, j + 1)))
+    n_nodes = (rows + 1) * (nx + 1)
+    with open(path, "w") as f:
+        f.write(f"{n_nodes} {nx * rows + len(lines)} 0 0 0\n")
+        for j in range(rows + 1):
+            for i in range(nx + 1):
+                f.write(f"{node(i, j)} {xs[i]:.15g} {ys[j]:.15g} 0\n")
+        c = 0
+        for j in range(rows):
+            for i in range(nx):
+                c += 1
+                f.write(f"{c} 0 quad {node(i, j)} {node(i + 1, j)} "
+                        f"{node(i + 1, j + 1)} {node(i, j + 1)}\n")
+        for bid, a, b in lines:
+            c += 1
+            f.write(f"{c} {bid} line {a} {b}\n")
+
+
+write(grid_path, ny, True)
+write(body_path, surface, False)
+print(f"grid {nx} x {ny} cells, soil {nx} x {surface}, smallest {h:g}, "
+      f"largest {max(max(b - a for a, b in zip(xs, xs[1:])), max(b - a for a, b in zip(ys, ys[1:]))):.3f}")
