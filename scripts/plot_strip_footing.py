@@ -44,12 +44,11 @@ for ax, family in zip(axes[0], families):
     ax.set_ylabel("bearing pressure q / $c_u$")
     ax.set_xlim(0, 0.5)
     ax.set_ylim(0, 12)
-    ax.legend(loc="lower right")
+    ax.legend(loc="lower right", ncol=2, fontsize="small")
     parts = family.split("-")
     title = "-".join(p for p in parts if p not in ("fixed", "graded"))
-    title = "standard MPM" if title in ("", "standard") else title
-    if "fixed" in parts:
-        title += ", fixed geometry"
+    title = f"{title or 'standard'} family, "
+    title += "fixed geometry" if "fixed" in parts else "updated geometry"
     if "graded" in parts:
         title += ", graded grids (h: finest cells)"
     ax.set_title(title)

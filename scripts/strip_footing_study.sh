@@ -25,7 +25,8 @@
 # GEOMETRY=fixed runs with Implicit solver/Geometry = fixed (equilibrium
 # in the undeformed shape, the small-deformation analysis) and appends
 # -fixed to the variant's name. END (default 0.5) is the last
-# settlement / B, STEP (default 0.01) the load step / B. GRID=graded takes each h as the cell size on the region
+# settlement / B, STEP (default 0.01) the load step / B, SOLVER (default
+# automatic) the Implicit solver/Linear solver. GRID=graded takes each h as the cell size on the region
 # of the collapse mechanism only, the cells growing towards the far walls
 # (scripts/make_strip_footing_grid.py; the soil then is that grid's
 # cells below its surface), and appends -graded to the variant's name.
@@ -104,6 +105,7 @@ subsection Output
 end
 subsection Implicit solver
   set Preconditioner = $preconditioner
+  set Linear solver = ${SOLVER:-automatic}
   set Ghost penalty = ${GHOST:-0.01}
   set Geometry = ${GEOMETRY:-updated}
 end

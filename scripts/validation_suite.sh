@@ -30,7 +30,9 @@
 #                   and 2 and 3 at h = 1                           20 min
 #   water_column    scripts/water_column_study.sh + plot            1.8 min
 #   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static,
-#                   standard MPM and CPDI (doc/benchmarks/strip_footing.md) 33 min
+#                   standard MPM and CPDI at large deformation, and the
+#                   limit loads in a fixed geometry on graded grids
+#                   (doc/benchmarks/strip_footing.md)                 about 2 h
 #   ghost_penalty   scripts/ghost_penalty_study.sh, Cook's membrane of
 #                   neo-Hookean material at finite strain, every family
 #                   and beta (doc/guide/implicit.md)                40 s
@@ -62,7 +64,7 @@
 #                   and sloshing (doc/theory/volumetric_smoothing.md) 9 min
 #   recompute       scripts/recompute_measures.py on every run with
 #                   particle CSVs and parameters.prm                2.6 min
-# Full suite: about 5 hours. QUICK=1 (coarse grids, short runs, few
+# Full suite: about 6.5 hours. QUICK=1 (coarse grids, short runs, few
 # variants) takes a few
 # minutes and writes its results and figures under
 # results/validation-quick/ only: it never overwrites doc/figures.
@@ -207,10 +209,16 @@ part_cantilever_aspect() {
 }
 
 part_strip_footing() {
-  local h=""
-  [ "$quick" = 1 ] && h=0.25
-  FAMILIES="standard CPDI" "$root/scripts/strip_footing_study.sh" "$res/strip-footing" $h &&
-    $py "$root/scripts/plot_strip_footing.py" "$res/strip-footing" "$figs/strip_footing.png"
+  local study=$root/scripts/strip_footing_study.sh h="" fixed="0.25 0.125 0.0625 0.03125"
+  local limit="0.25 0.125 0.0625 0.03125 0.015625"
+  [ "$quick" = 1 ] && h=0.25 fixed=0.25 limit=0.25
+  FAMILIES="standard CPDI" "$study" "$res/strip-footing" $h &&
+    GRID=graded GEOMETRY=fixed END=0.3 REMEDIES="standard theta-bar filter" \
+      "$study" "$res/strip-footing" $fixed &&
+    $py "$root/scripts/plot_strip_footing.py" "$res/strip-footing" "$figs/strip_footing.png" &&
+    GRID=graded GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.002 \
+      REMEDIES="theta-bar filter standard" "$study" "$res/strip-footing-limit" $limit &&
+    $py "$root/scripts/plot_strip_footing_limit.py" "$res/strip-footing-limit" "$figs/strip_footing_limit.png"
 }
 
 part_ghost_penalty() {

@@ -17,9 +17,19 @@
 #include <cmath>
 
 #include "../tests.h"
+#include "moving_block.h"
 
 namespace
 {
+  const std::string neo_hookean = R"(      set Model = neo-Hookean
+      set Density = 1000
+      subsection Neo-Hookean
+        set Young's modulus = 1e6
+        set Poisson's ratio = 0.3
+      end)";
+
+  /// moving_block.h's block of neo-Hookean material in a fixed geometry,
+  /// by the @p integrator.
   template <int dim>
   std::string
   block(const std::string &slip,
@@ -28,34 +38,10 @@ namespace
         const std::string &integrator,
         const std::string &step)
   {
-    const std::string zero   = dim == 2 ? "0, 0" : "0, 0, 0";
-    const std::string corner = dim == 2 ? "1, 1" : "1, 1, 1";
-    const std::string cells  = dim == 2 ? "4, 4" : "4, 4, 4";
-    return std::string(dim == 2 ? "set Kinematic assumption = plane strain\n" :
-                                  "") +
-           "subsection Grid\n  set Lower corner = " + zero +
-           "\n  set Upper corner = " + corner +
-           "\n  set Subdivisions = " + cells +
-           "\nend\nsubsection Time stepping\n  set Integrator = " + integrator +
-           "\n  set Time step control = fixed\n  set Time step = " + step +
-           "\nend\nsubsection Implicit solver\n  set Geometry = fixed\nend\n"
-           "subsection Boundary conditions\n  set Slip boundary ids = " +
-           slip + "\n  set Moving boundary ids = " + moving +
-           "\n  set Moving boundary velocity = " + velocity +
-           "\nend\nsubsection Output\n  set Directory = results\nend\n"
-           "subsection Bodies\n  subsection Body 0\n    set Lower corner = " +
-           zero + "\n    set Upper corner = " + corner +
-           "\n    set Subdivisions = " + cells + R"(
-    subsection Material
-      set Model = neo-Hookean
-      set Density = 1000
-      subsection Neo-Hookean
-        set Young's modulus = 1e6
-        set Poisson's ratio = 0.3
-      end
-    end
-  end
-end)";
+    return mpm_test::moving_block<dim>(
+             slip, moving, velocity, step, neo_hookean) +
+           "subsection Time stepping\n  set Integrator = " + integrator +
+           "\nend\nsubsection Implicit solver\n  set Geometry = fixed\nend\n";
   }
 
   /// The largest distance of a particle from its initial place (all ranks).

@@ -22,9 +22,17 @@
 #include <cmath>
 
 #include "../tests.h"
+#include "moving_block.h"
 
 namespace
 {
+  const std::string linear_elastic = R"(      set Model = linear elastic
+      set Density = 1000
+      subsection Linear elastic
+        set Young's modulus = 1e6
+        set Poisson's ratio = 0.3
+      end)";
+
   template <int dim>
   std::string
   block(const std::string &slip,
@@ -32,53 +40,8 @@ namespace
         const std::string &velocity,
         const std::string &step)
   {
-    const std::string corner = dim == 2 ? "1, 1" : "1, 1, 1";
-    const std::string cells  = dim == 2 ? "4, 4" : "4, 4, 4";
-    return std::string(dim == 2 ? "set Kinematic assumption = plane strain\n" :
-                                  "") +
-           R"(subsection Grid
-  set Lower corner = )" +
-           std::string(dim == 2 ? "0, 0" : "0, 0, 0") + R"(
-  set Upper corner = )" +
-           corner + R"(
-  set Subdivisions = )" +
-           cells + R"(
-end
-subsection Time stepping
-  set Integrator = quasi-static
-  set Time step control = fixed
-  set Time step = )" +
-           step + R"(
-end
-subsection Boundary conditions
-  set Slip boundary ids = )" +
-           slip + R"(
-  set Moving boundary ids = )" +
-           moving + R"(
-  set Moving boundary velocity = )" +
-           velocity + R"(
-end
-subsection Output
-  set Directory = results
-end
-subsection Bodies
-  subsection Body 0
-    set Lower corner = )" +
-           std::string(dim == 2 ? "0, 0" : "0, 0, 0") + R"(
-    set Upper corner = )" +
-           corner + R"(
-    set Subdivisions = )" +
-           cells + R"(
-    subsection Material
-      set Model = linear elastic
-      set Density = 1000
-      subsection Linear elastic
-        set Young's modulus = 1e6
-        set Poisson's ratio = 0.3
-      end
-    end
-  end
-end)";
+    return mpm_test::moving_block<dim>(
+      slip, moving, velocity, step, linear_elastic);
   }
 
   template <int dim>
