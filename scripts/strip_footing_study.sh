@@ -29,7 +29,9 @@
 # automatic) the Implicit solver/Linear solver. GRID=graded takes each h as the cell size on the region
 # of the collapse mechanism only, the cells growing towards the far walls
 # (scripts/make_strip_footing_grid.py; the soil then is that grid's
-# cells below its surface), and appends -graded to the variant's name.
+# cells below its surface), and appends -graded to the variant's name;
+# EDGE (with GRID=graded) refines the cells around the footing's edge to
+# that size and appends -edge<EDGE>.
 # STIFFNESS (default the parameter file's 100) sets the soil's E / c_u and
 # appends -E<value> to the variant's name.
 # Usage: scripts/strip_footing_study.sh [OUT] [h values...]   (MPM=...)
@@ -72,18 +74,22 @@ for h in ${@:-0.25 0.125 0.0625}; do
 end"
     soil_section="set Subdivisions = $ns, $ns"
     footing_cells=$nf
+    footing_top=$(python3 -c "print(5 + $h)")
     if [ "${GRID:-uniform}" = graded ]; then
       variant=$variant-graded
-      mkdir -p "$out/mesh_$h"
-      python3 "$root/scripts/make_strip_footing_grid.py" "$out/mesh_$h/grid.ucd" \
-        "$out/mesh_$h/soil.ucd" "$h" > /dev/null
+      footing_top=$(python3 -c "print(5 + ${EDGE:-$h})")
+      footing_cells=$(python3 -c "print(max(4 * $nf, round(1 / ${EDGE:-$h})))")
+      mesh=$out/mesh_$h${EDGE:+_$EDGE}
+      [ -n "${EDGE:-}" ] && variant=$variant-edge$EDGE
+      mkdir -p "$mesh"
+      python3 "$root/scripts/make_strip_footing_grid.py" "$mesh/grid.ucd" \
+        "$mesh/soil.ucd" "$h" ${EDGE:-} > /dev/null
       grid_section="subsection Grid
   set Type = mesh file
-  set Mesh file = $out/mesh_$h/grid.ucd
+  set Mesh file = $mesh/grid.ucd
 end"
       soil_section="set Geometry = mesh file
-    set Mesh file = $out/mesh_$h/soil.ucd"
-      footing_cells=$((4 * nf))
+    set Mesh file = $mesh/soil.ucd"
     fi
     dir="$out/${variant}_$h"
     cat > "$out/case.prm" <<PRM
@@ -121,7 +127,7 @@ subsection Bodies
     end
   end
   subsection Body 1
-    set Upper corner = 0.5, $(python3 -c "print(5 + $h)")
+    set Upper corner = 0.5, $footing_top
     set Subdivisions = $footing_cells, 1
   end
 end

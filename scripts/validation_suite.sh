@@ -211,14 +211,20 @@ part_cantilever_aspect() {
 part_strip_footing() {
   local study=$root/scripts/strip_footing_study.sh h="" fixed="0.25 0.125 0.0625 0.03125"
   local limit="0.25 0.125 0.0625 0.03125 0.015625"
-  [ "$quick" = 1 ] && h=0.25 fixed=0.25 limit=0.25
+  # h:edge cell size (the edge's zone does not fit on the coarse grids)
+  local edges="0.03125:0.0078125 0.03125:0.00390625 0.03125:0.001953125 0.015625:0.00390625"
+  [ "$quick" = 1 ] && h=0.25 fixed=0.25 limit=0.25 edges=
   FAMILIES="standard CPDI" "$study" "$res/strip-footing" $h &&
     GRID=graded GEOMETRY=fixed END=0.3 REMEDIES="standard theta-bar filter" \
       "$study" "$res/strip-footing" $fixed &&
     $py "$root/scripts/plot_strip_footing.py" "$res/strip-footing" "$figs/strip_footing.png" &&
     GRID=graded GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.002 SOLVER=direct \
       REMEDIES="theta-bar filter standard" "$study" "$res/strip-footing-limit" $limit &&
-    $py "$root/scripts/plot_strip_footing_limit.py" "$res/strip-footing-limit" "$figs/strip_footing_limit.png"
+    $py "$root/scripts/plot_strip_footing_limit.py" "$res/strip-footing-limit" "$figs/strip_footing_limit.png" &&
+    for run in $edges; do
+      GRID=graded EDGE=${run#*:} GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.001 SOLVER=direct \
+        REMEDIES=theta-bar "$study" "$res/strip-footing-edge" ${run%%:*} || return 1
+    done
 }
 
 part_ghost_penalty() {
