@@ -12,6 +12,8 @@ as quadrature points sit in finite elements)."""
 import random
 import sys
 
+import structured_quad_ucd
+
 out = sys.argv[1]
 W, Ht = float(sys.argv[2]), float(sys.argv[3])
 nx, ny = int(sys.argv[4]), int(sys.argv[5])
@@ -32,20 +34,6 @@ for j in range(ny + 1):
         nodes.append((i * hx + dx, j * hy + dy))
 
 
-def write(path, rows):
-    n_nodes = (rows + 1) * (nx + 1)
-    with open(path, "w") as f:
-        f.write(f"{n_nodes} {nx * rows} 0 0 0\n")
-        for k, (x, y) in enumerate(nodes[:n_nodes]):
-            f.write(f"{k + 1} {x:.12f} {y:.12f} 0\n")
-        c = 0
-        for j in range(rows):
-            for i in range(nx):
-                c += 1
-                a = j * (nx + 1) + i + 1
-                f.write(f"{c} 0 quad {a} {a + 1} {a + nx + 2} {a + nx + 1}\n")
-
-
-write(out, ny)
+structured_quad_ucd.write(out, nodes, nx, ny, number="{:.12f}")
 if body:
-    write(body, jb)
+    structured_quad_ucd.write(body, nodes, nx, jb, number="{:.12f}")

@@ -16,6 +16,8 @@ BODY.ucd h [H_EDGE]"""
 import math
 import sys
 
+import structured_quad_ucd
+
 grid_path, body_path, h = sys.argv[1], sys.argv[2], float(sys.argv[3])
 h_edge = float(sys.argv[4]) if len(sys.argv) > 4 else h
 ratio = 1.25
@@ -74,36 +76,8 @@ ys[surface], xs[edge] = 5.0, 0.5
 nx, ny = len(xs) - 1, len(ys) - 1
 
 
-def write(path, rows, faces):
-    """The first `rows` rows of cells, and with `faces` the boundary
-    lines with their ids."""
-    node = lambda i, j: j * (nx + 1) + i + 1
-    lines = []
-    if faces:
-        for i in range(nx):
-            lines.append((2, node(i, 0), node(i + 1, 0)))
-            lines.append((3, node(i + 1, rows), node(i, rows)))
-        for j in range(rows):
-            lines.append((0, node(0, j + 1), node(0, j)))
-            lines.append((1, node(nx, j), node(nx, j + 1)))
-    n_nodes = (rows + 1) * (nx + 1)
-    with open(path, "w") as f:
-        f.write(f"{n_nodes} {nx * rows + len(lines)} 0 0 0\n")
-        for j in range(rows + 1):
-            for i in range(nx + 1):
-                f.write(f"{node(i, j)} {xs[i]:.15g} {ys[j]:.15g} 0\n")
-        c = 0
-        for j in range(rows):
-            for i in range(nx):
-                c += 1
-                f.write(f"{c} 0 quad {node(i, j)} {node(i + 1, j)} "
-                        f"{node(i + 1, j + 1)} {node(i, j + 1)}\n")
-        for bid, a, b in lines:
-            c += 1
-            f.write(f"{c} {bid} line {a} {b}\n")
-
-
-write(grid_path, ny, True)
-write(body_path, surface, False)
+points = [(x, y) for y in ys for x in xs]
+structured_quad_ucd.write(grid_path, points, nx, ny, side_ids=(0, 1, 2, 3))
+structured_quad_ucd.write(body_path, points, nx, surface)
 print(f"grid {nx} x {ny} cells, soil {nx} x {surface}, smallest {h_edge:g}, "
       f"largest {max(max(b - a for a, b in zip(xs, xs[1:])), max(b - a for a, b in zip(ys, ys[1:]))):.3f}")

@@ -1432,9 +1432,12 @@ namespace mpm
               prop[L::velocity + c] = dynamic ? v_end[c] : u[b][c] / dt;
           }
       }
+    // (a fixed geometry is back where the step started: nothing to move
+    // or relocate)
+    if (fixed)
+      return;
     TimerOutput::Scope timer(state.timer, "position update");
-    if (!fixed &&
-        shape_functions::family_traits(state.params.shape_functions.family)
+    if (shape_functions::family_traits(state.params.shape_functions.family)
           .tracks_corners)
       state.local_error.record(
         transfer::move_domain_corners(grid,

@@ -21,27 +21,19 @@
 
 namespace
 {
-  const std::string neo_hookean = R"(      set Model = neo-Hookean
-      set Density = 1000
-      subsection Neo-Hookean
-        set Young's modulus = 1e6
-        set Poisson's ratio = 0.3
-      end)";
+  const std::string fixed =
+    "subsection Implicit solver\n  set Geometry = fixed\nend\n";
 
-  /// moving_block.h's block of neo-Hookean material in a fixed geometry,
-  /// by the @p integrator.
+  /// moving_block.h's block of neo-Hookean material in a fixed geometry.
   template <int dim>
   std::string
   block(const std::string &slip,
         const std::string &moving,
-        const std::string &velocity,
-        const std::string &integrator,
-        const std::string &step)
+        const std::string &velocity)
   {
     return mpm_test::moving_block<dim>(
-             slip, moving, velocity, step, neo_hookean) +
-           "subsection Time stepping\n  set Integrator = " + integrator +
-           "\nend\nsubsection Implicit solver\n  set Geometry = fixed\nend\n";
+             slip, moving, velocity, "1", "neo-Hookean") +
+           fixed;
   }
 
   /// The largest distance of a particle from its initial place (all ranks).
@@ -63,10 +55,9 @@ namespace
   void
   uniaxial_strain()
   {
-    mpm_test::Case<dim> c(
-      dim == 2 ?
-        block<2>("0, 1, 2", "3", "0; -0.02", "quasi-static", "1") :
-        block<3>("0, 1, 2, 4, 5", "3", "0; -0.02; 0", "quasi-static", "1"));
+    mpm_test::Case<dim> c(dim == 2 ?
+                            block<2>("0, 1, 2", "3", "0; -0.02") :
+                            block<3>("0, 1, 2, 4, 5", "3", "0; -0.02; 0"));
     for (unsigned int k = 0; k < 5; ++k)
       c.simulator->do_time_step(1);
     const double E = 1e6, nu = 0.3;
@@ -92,15 +83,8 @@ namespace
   void
   newmark_shear()
   {
-    const double g = 0.05, dt = 0.01;
-    std::string  text =
-      block<2>("", "0, 1, 2, 3", "0.05*y; 0", "Newmark", "0.01") + R"(
-subsection Bodies
-  subsection Body 0
-    set Initial velocity = 0.05*y; 0
-  end
-end)";
-    mpm_test::Case<2> c(text);
+    const double      g = 0.05, dt = 0.01;
+    mpm_test::Case<2> c(mpm_test::newmark_shear_block("neo-Hookean") + fixed);
     auto             &sim = *c.simulator;
     for (unsigned int k = 0; k < 10; ++k)
       sim.do_time_step(dt);

@@ -26,13 +26,6 @@
 
 namespace
 {
-  const std::string linear_elastic = R"(      set Model = linear elastic
-      set Density = 1000
-      subsection Linear elastic
-        set Young's modulus = 1e6
-        set Poisson's ratio = 0.3
-      end)";
-
   template <int dim>
   std::string
   block(const std::string &slip,
@@ -41,7 +34,7 @@ namespace
         const std::string &step)
   {
     return mpm_test::moving_block<dim>(
-      slip, moving, velocity, step, linear_elastic);
+      slip, moving, velocity, step, "linear elastic");
   }
 
   template <int dim>
@@ -133,17 +126,8 @@ namespace
   void
   newmark_shear()
   {
-    const double g = 0.05, dt = 0.01;
-    std::string  text = block<2>("", "0, 1, 2, 3", "0.05*y; 0", "0.01") + R"(
-subsection Time stepping
-  set Integrator = Newmark
-end
-subsection Bodies
-  subsection Body 0
-    set Initial velocity = 0.05*y; 0
-  end
-end)";
-    mpm_test::Case<2> c(text);
+    const double      g = 0.05, dt = 0.01;
+    mpm_test::Case<2> c(mpm_test::newmark_shear_block("linear elastic"));
     auto             &sim = *c.simulator;
     for (unsigned int k = 0; k < 10; ++k)
       sim.do_time_step(dt);
