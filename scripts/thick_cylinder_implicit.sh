@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Thick-walled cylinder under internal pressure by the quasi-static
 # integrator (prm/thick_cylinder_quasi_static.prm, one load step): standard
-# MPM and Volumetric smoothing = cell (theta-bar for the linear elastic
-# model) for nu = 0.3, 0.49, 0.499, 0.4999 on background grids h = 0.125,
+# MPM, Volumetric smoothing = cell (theta-bar for the linear elastic
+# model) and Volumetric smoothing = node (the node average) for nu = 0.3, 0.49, 0.499, 0.4999 on background grids h = 0.125,
 # 0.0625, 0.03125 (body mesh of the same size, 3x3 particles per body
 # cell). Prints the benchmark's columns (u_r(inner)/exact, pressure and
 # sigma_rr errors and checkerboard, divided by p), Newton and linear
 # iterations and the wall time of each run. VARIANTS="standard theta-bar
-# theta-bar-split" adds theta-bar preconditioned by Implicit
+# node theta-bar-split" adds theta-bar preconditioned by Implicit
 # solver/Preconditioner = AMG with cell pressure (the same displacements,
 # fewer GMRES iterations).
 # Usage: scripts/thick_cylinder_implicit.sh [h values...]   (RANKS=n, MPM=..., VARIANTS=...)
@@ -28,9 +28,10 @@ for h in ${@:-0.125 0.0625 0.03125}; do
   mesh="$work/quarter_annulus_${nr}x${nt}.ucd"
   "$root/scripts/make_quarter_annulus.py" "$mesh" 1 2 $nr $nt
   for nu in $nus; do
-    for variant in ${VARIANTS:-standard theta-bar}; do
+    for variant in ${VARIANTS:-standard theta-bar node}; do
       smoothing=none preconditioner=AMG
       [ $variant != standard ] && smoothing=cell
+      [ $variant = node ] && smoothing=node
       [ $variant = theta-bar-split ] && preconditioner="AMG with cell pressure"
       cat > "$work/case.prm" <<PRM
 include $root/prm/thick_cylinder_quasi_static.prm

@@ -9,6 +9,7 @@
 #include <mpm/particles/particle_layout.h>
 #include <mpm/remedies/assumed_stress_force.h>
 #include <mpm/remedies/stress_filter.h>
+#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <type_traits>
 
 namespace mpm
 {
@@ -37,6 +39,7 @@ namespace mpm
                         GhostPenalty<dim>::youngs_modulus(s.bodies) :
                       0.)
     , smoothing(std::make_unique<Smoothing>(s.bodies))
+    , node_smoothing(std::make_unique<NodeSmoothing>(s.bodies))
   {
     using LinearSolver    = Parameters::ImplicitSolver::LinearSolver;
     const auto &p         = state.params;
@@ -68,7 +71,16 @@ namespace mpm
         // F-bar, the rate form's B-bar and the filter (G^T H^-1 G_C with
         // G_C != G) couple a cell's particles without symmetry
         symmetric = symmetric && material.has_symmetric_tangent() &&
-                    !smoothing->smooths(b) && !s.stress_filter->filtered(b);
+                    !smoothing->smooths(b) && !node_smoothing->smooths(b) &&
+                    !s.stress_filter->filtered(b);
+        if (node_smoothing->smooths(b) && s.stress_filter->filtered(b))
+          throw InputError(section +
+                           ": Volumetric smoothing = node with a Stress "
+                           "filter has no linearized form for Time "
+                           "stepping/Integrator = " +
+                           name() +
+                           "; use Volumetric smoothing = cell with the "
+                           "filter, or the explicit integrator");
         rigid_index.push_back(body.is_rigid() ? int(rigid_bodies.size()) : -1);
         if (body.is_rigid())
           rigid_bodies.push_back(b);
@@ -432,16 +444,23 @@ namespace mpm
     if (n_r > 0)
       rigid_mass = 0.;
     stencil_groups.clear();
+    const bool node_average = node_smoothing->any();
+    node_cell_vertices.clear();
+    node_cell_reach.clear();
     double     *V = support.begin();
     double     *m = n_r > 0 ? rigid_mass.begin() : nullptr;
     std::string error;
-    with_cell_weights([&](const auto &, const auto &pic, auto &weights) {
+    with_cell_weights([&](const auto &cell, const auto &pic, auto &weights) {
       stencils.begin_cell();
+      bool node_smoothed = false;
       for (const auto &particle : pic)
         {
           if (!weights.evaluate(particle, wide, error))
             return false;
           const double *prop = particle.get_properties().data();
+          node_smoothed =
+            node_smoothed ||
+            node_smoothing->smooths(static_cast<unsigned int>(prop[L::body]));
           const int r = rigid_index[static_cast<unsigned int>(prop[L::body])];
           for (unsigned int a = 0; a < weights.size(); ++a)
             {
@@ -460,6 +479,23 @@ namespace mpm
                                       stencils.nodes() + stencils.n_nodes());
           stencil_groups.close_group();
         }
+      if (node_smoothed)
+        {
+          // the node average couples the cell's vertices with its reach
+          const unsigned int *corners = state.background.nodes(cell);
+          node_cell_vertices.insert(node_cell_vertices.end(),
+                                    corners,
+                                    corners + Smoothing::nv);
+          if (wide)
+            node_cell_reach.nodes.insert(node_cell_reach.nodes.end(),
+                                         stencils.nodes(),
+                                         stencils.nodes() + stencils.n_nodes());
+          else
+            node_cell_reach.nodes.insert(node_cell_reach.nodes.end(),
+                                         corners,
+                                         corners + Smoothing::nv);
+          node_cell_reach.close_group();
+        }
       return true;
     });
     state.local_error.record(error);
@@ -471,11 +507,20 @@ namespace mpm
         rigid_mass.update_ghost_values();
       }
     if (wide)
+      // (the ghost penalty's faces couple beyond the stencils)
+      stencil_groups.append(face_groups);
+    if (node_average)
       {
-        // (the ghost penalty's faces couple beyond the stencils)
-        stencil_groups.append(face_groups);
-        system.couple(stencil_groups);
+        node_smoothing->begin_step(state.background,
+                                   state.comm,
+                                   node_cell_vertices,
+                                   node_cell_reach.nodes,
+                                   node_cell_reach.start);
+        system.couple(wide ? stencil_groups : system.cell_groups(),
+                      &node_smoothing->node_coupling());
       }
+    else if (wide)
+      system.couple(stencil_groups);
   }
 
   template <int dim>
@@ -836,6 +881,34 @@ namespace mpm
       return symmetrize(j * trace(f_inv * dh) * s +
                         j * material_change(T, dh_eff));
     }
+
+    /**
+     * The node average's d h_eff / du_bk at the particle @p q, without the
+     * averages' own change (the coupling part, LinearizedNodeSmoothing):
+     * the rate form's e_k (x) G_b - (G_b)_k / d I, the total form's
+     * d(alpha f) = alpha e_k (x) G_b - alpha f (f^-T G_b)_k / d.
+     */
+    template <typename Point>
+    auto
+    node_local_derivative(const Point       &q,
+                          const bool         total,
+                          const unsigned int b,
+                          const unsigned int k)
+    {
+      constexpr int  dim = std::remove_reference_t<decltype(q.h)>::dimension;
+      Tensor<2, dim> d;
+      if (!total)
+        {
+          d[k] = q.G[b];
+          for (unsigned int i = 0; i < dim; ++i)
+            d[i][i] -= q.G[b][k] / dim;
+          return d;
+        }
+      const double dJ_J = (transpose(q.f_inv) * q.G[b])[k];
+      d                 = (-q.alpha * dJ_J / dim) * q.f;
+      d[k] += q.alpha * q.G[b];
+      return d;
+    }
   } // namespace
 
   template <int dim>
@@ -864,6 +937,13 @@ namespace mpm
     if (with_matrix && state.stress_filter->any())
       filtered_changes.assign(points.size() * n, SymmetricTensor<2, dim>());
     bool any_filtered = false;
+    // the node average: the cell's rows of D
+    const unsigned int *corners   = state.background.nodes(cell);
+    const bool          node_rows = with_matrix && node_smoothing->any();
+    bool                any_node  = false;
+    double              N[Smoothing::nv];
+    if (node_rows)
+      node_smoothing->begin_cell(n_nodes);
     for (const auto &particle : pic)
       {
         const double *prop     = particle.get_properties().data();
@@ -879,6 +959,28 @@ namespace mpm
         Tensor<2, dim> h_rate = q.h, F = q.F, h_eff = q.h;
         if (smoothed)
           smoothing->material_increment(q, total, h_rate, F, h_eff);
+        double J_bar = 0, theta_bar = 0, S = 0;
+        bool   node_smoothed = false;
+        if (node_smoothing->smooths(q.body))
+          {
+            state.background.geometry(cell).values(
+              particle.get_reference_location(), N);
+            node_smoothed =
+              node_smoothing->averages(corners, N, J_bar, theta_bar, S);
+          }
+        if (node_smoothed)
+          {
+            remedies::smooth_volume_change<dim>(
+              h_rate, F, determinant(q.F), J_bar, theta_bar);
+            q.alpha = std::pow(J_bar / determinant(q.F), 1. / dim);
+            h_eff   = h_rate;
+            if (total)
+              {
+                h_eff = q.alpha * q.f;
+                for (unsigned int d = 0; d < dim; ++d)
+                  h_eff[d][d] -= 1.;
+              }
+          }
         kinematics.velocity_gradient         = embed<dim>(h_rate / dt, 0.);
         kinematics.F                         = embed<dim>(F, 1.);
         tangent_kinematics.velocity_gradient = embed<dim>(h_eff / dt, 0.);
@@ -953,6 +1055,29 @@ namespace mpm
                                 ArrayView<const double>(prop + L::history,
                                                         material.n_history()),
                                 T);
+        if (node_smoothed)
+          {
+            // Particle p's force by its J_bar (total: d h_eff = alpha f /
+            // (d J_bar) dJ_bar) or theta_bar (rate: I / d dtheta_bar), the
+            // material's part of the stress change alone.
+            Tensor<2, dim> by_average = unit_symmetric_tensor<dim>() / dim;
+            if (total)
+              by_average = q.alpha / (dim * J_bar) * q.f;
+            const Tensor<2, dim> dP = first_piola_change(
+              s, q.j, q.f_inv, T, Tensor<2, dim>(), by_average);
+            node_force_derivative.assign(n, 0.);
+            for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
+              {
+                const Tensor<1, dim> column =
+                  q.V_n * (dP * stencils.gradient(e));
+                for (unsigned int i = 0; i < dim; ++i)
+                  node_force_derivative[stencils.node(e) * dim + i] +=
+                    column[i];
+              }
+            node_smoothing->add_force_derivative(
+              corners, N, S, total, node_force_derivative);
+            any_node = true;
+          }
         for (unsigned int b = 0; b < n_nodes; ++b)
           {
             if (!smoothed && !stencils.reaches(p, b))
@@ -962,7 +1087,9 @@ namespace mpm
                 Tensor<2, dim> dh;
                 dh[k] = q.G[b];
                 const Tensor<2, dim> dh_eff =
-                  smoothed ? smoothing->derivative(q, total, b, k) : dh;
+                  smoothed      ? smoothing->derivative(q, total, b, k) :
+                  node_smoothed ? node_local_derivative(q, total, b, k) :
+                                  dh;
                 if (filtered)
                   {
                     filtered_changes[p * n + b * dim + k] =
@@ -987,6 +1114,10 @@ namespace mpm
     if (any_filtered && !add_filtered_force(cell, pic, with_matrix, error))
       return false;
     system.node_indices(nodes, n_nodes, cell_dofs);
+    if (any_node)
+      node_smoothing->finish_force_cell(corners,
+                                        cell_dofs,
+                                        system.constraints());
     if (with_matrix && system.splits_cell_pressure())
       {
         // each split body's stiff volumetric part, lambda_s g b^T / V
@@ -1177,6 +1308,60 @@ namespace mpm
 
   template <int dim>
   bool
+  ImplicitIntegrator<dim>::add_node_sums(const double t,
+                                         const bool   with_matrix,
+                                         std::string &error)
+  {
+    // The node average's first pass: every node-smoothed particle's trial
+    // J and tr h to the nodes (and its row of C), before any particle's
+    // stress can be updated.
+    using L          = ParticleLayout<dim>;
+    const auto &grid = state.background;
+    node_smoothing->begin_assembly(with_matrix);
+    double     N[Smoothing::nv];
+    const bool ok =
+      with_cell_weights([&](const auto &cell, const auto &pic, auto &weights) {
+        if (!gather_cell(weights, pic, t, error))
+          return false;
+        const unsigned int *corners = grid.nodes(cell);
+        const auto         &geo     = grid.geometry(cell);
+        bool                any     = false;
+        unsigned int        p       = 0;
+        node_smoothing->begin_cell(stencils.n_nodes());
+        for (const auto &particle : pic)
+          {
+            const auto &q = points[p++];
+            if (!node_smoothing->smooths(q.body))
+              continue;
+            any = true;
+            geo.values(particle.get_reference_location(), N);
+            node_smoothing->add_state(corners,
+                                      N,
+                                      particle.get_properties()[L::mass],
+                                      determinant(q.F),
+                                      trace(q.h),
+                                      with_matrix,
+                                      transpose(q.f_inv),
+                                      q.G);
+          }
+        if (any && with_matrix)
+          {
+            system.node_indices(stencils.nodes(),
+                                stencils.n_nodes(),
+                                cell_dofs);
+            node_smoothing->finish_state_cell(corners,
+                                              cell_dofs,
+                                              system.constraints());
+          }
+        return true;
+      });
+    // (collective, whatever happened here)
+    node_smoothing->finish_sums(with_matrix);
+    return ok;
+  }
+
+  template <int dim>
+  bool
   ImplicitIntegrator<dim>::assemble(const double t,
                                     const double dt,
                                     const bool   with_matrix,
@@ -1185,19 +1370,29 @@ namespace mpm
   {
     TimerOutput::Scope timer(state.timer, "implicit assembly");
     system.begin_assembly(with_matrix);
-    internal_force = 0.;
-    external_force = 0.;
-    const bool ok =
-      with_cell_weights([&](const auto &cell, const auto &pic, auto &weights) {
-        return gather_cell(weights, pic, t, error) &&
-               add_cell_system(cell, pic, dt, with_matrix, error);
-      });
+    internal_force          = 0.;
+    external_force          = 0.;
+    const bool node_average = node_smoothing->any();
+    bool       ok = !node_average || add_node_sums(t, with_matrix, error);
+    ok            = ok && with_cell_weights(
+                 [&](const auto &cell, const auto &pic, auto &weights) {
+                   return gather_cell(weights, pic, t, error) &&
+                          add_cell_system(cell, pic, dt, with_matrix, error);
+                 });
     if (ok && ghost_penalty.enabled())
       ghost_penalty.add_to_system(
         state.background, increment, with_matrix, system, internal_force);
     const double inertia = with_inertia ? add_inertia(dt, with_matrix) : 0.;
     // Every rank takes part in the exchanges, whatever happened here.
-    system.finish_assembly(with_matrix);
+    if (node_average && with_matrix)
+      {
+        node_smoothing->finish_matrix(node_coupling, node_coupling_rhs);
+        system.finish_assembly(with_matrix,
+                               node_coupling.get(),
+                               &node_coupling_rhs);
+      }
+    else
+      system.finish_assembly(with_matrix);
     internal_force.compress(VectorOperation::add);
     external_force.compress(VectorOperation::add);
     const bool all_ok = Utilities::MPI::min(ok ? 1 : 0, state.comm) == 1;

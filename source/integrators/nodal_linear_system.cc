@@ -57,12 +57,14 @@ namespace mpm
         cells.close_group();
       }
     cells.append(extra);
+    grid_groups = cells;
     couple(cells);
   }
 
   template <int dim>
   void
-  NodalLinearSystem<dim>::couple(const NodeGroups &groups)
+  NodalLinearSystem<dim>::couple(const NodeGroups       &groups,
+                                 const Epetra_CrsMatrix *node_coupling)
   {
     DynamicSparsityPattern dsp(relevant);
     std::vector<Index>     indices;
@@ -74,6 +76,22 @@ namespace mpm
         for (const Index row : indices)
           dsp.add_entries(row, indices.begin(), indices.end());
       }
+    if (node_coupling)
+      for (int r = 0; r < node_coupling->NumMyRows(); ++r)
+        {
+          const Index a = node_coupling->RowMap().GID64(r);
+          int         n;
+          double     *values;
+          int        *columns;
+          node_coupling->ExtractMyRowView(r, n, values, columns);
+          for (int e = 0; e < n; ++e)
+            {
+              const Index b = node_coupling->ColMap().GID64(columns[e]);
+              for (unsigned int c = 0; c < dim; ++c)
+                for (unsigned int k = 0; k < dim; ++k)
+                  dsp.add(dim * a + c, dim * b + k);
+            }
+        }
     // Rows that no group reaches (constrained) get their diagonal in
     // finish_assembly().
     for (const Index k : owned)
@@ -311,12 +329,34 @@ namespace mpm
 
   template <int dim>
   void
-  NodalLinearSystem<dim>::finish_assembly(const bool with_matrix)
+  NodalLinearSystem<dim>::finish_assembly(
+    const bool                           with_matrix,
+    const Epetra_CrsMatrix              *coupling,
+    const TrilinosWrappers::MPI::Vector *rhs_change)
   {
     rhs.compress(VectorOperation::add);
+    if (rhs_change)
+      rhs.add(1., *rhs_change);
     if (!with_matrix)
       return;
     matrix.compress(VectorOperation::add);
+    if (coupling)
+      {
+        std::vector<Index> columns;
+        for (int r = 0; r < coupling->NumMyRows(); ++r)
+          {
+            int     n;
+            double *values;
+            int    *local;
+            coupling->ExtractMyRowView(r, n, values, local);
+            columns.resize(n);
+            for (int e = 0; e < n; ++e)
+              columns[e] = coupling->ColMap().GID64(local[e]);
+            matrix.add(
+              coupling->RowMap().GID64(r), n, columns.data(), values, false);
+          }
+        matrix.compress(VectorOperation::add);
+      }
     // A constrained row that no cell with particles reached is empty: it
     // gets the mean diagonal of the free rows (its solution is set by the
     // constraint anyway).

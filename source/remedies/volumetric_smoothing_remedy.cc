@@ -45,15 +45,11 @@ namespace mpm
             keeps_smoothed_volume = prm.get("Particle volume") == "smoothed";
         }
 
-        /// The cell average is linearized for the implicit step
-        /// (LinearizedCellSmoothing); the node average, which couples
-        /// neighbouring cells, is not.
+        /// Both averages are linearized for the implicit step
+        /// (LinearizedCellSmoothing, LinearizedNodeSmoothing).
         void
-        check(const Context &context) const override
-        {
-          if (average == VolumeAverage::node)
-            require_explicit_integrator(context, "Volumetric smoothing = node");
-        }
+        check(const Context &) const override
+        {}
       };
 
       using CellSmoothing = VolumetricSmoothingRemedy<VolumeAverage::cell>;
@@ -71,8 +67,7 @@ namespace mpm
                           "node",
                           "node: mass-weighted to the grid nodes and "
                           "interpolated back (averages of all node-smoothed "
-                          "bodies mix at shared nodes); refused by the "
-                          "implicit integrators.")
+                          "bodies mix at shared nodes).")
     } // namespace
   }   // namespace remedies
 } // namespace mpm

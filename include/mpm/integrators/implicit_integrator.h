@@ -10,6 +10,7 @@
 #include <mpm/integrators/nodal_linear_system.h>
 #include <mpm/integrators/time_integrator.h>
 #include <mpm/remedies/linearized_cell_smoothing.h>
+#include <mpm/remedies/linearized_node_smoothing.h>
 #include <mpm/utilities/expression.h>
 
 #include <memory>
@@ -120,6 +121,10 @@ namespace mpm
     template <typename Function>
     bool
     with_cell_weights(const Function &f);
+    /// The node average's first pass over the cells (its nodal sums, and
+    /// C with @p with_matrix) at the trial increment of time @p t.
+    bool
+    add_node_sums(const double t, const bool with_matrix, std::string &error);
     /// The trial kinematics of a cell's particles at the current
     /// increment (points, loads, stencils, the smoothing's cell sums).
     template <typename Weights, typename Particles>
@@ -258,8 +263,16 @@ namespace mpm
     GhostPenalty<dim>                           ghost_penalty;
     typename NodalLinearSystem<dim>::NodeGroups face_groups;
     /// `Volumetric smoothing = cell` of the trial increments
-    std::unique_ptr<Smoothing>             smoothing;
-    std::vector<typename Smoothing::Point> points; ///< of one cell
+    std::unique_ptr<Smoothing> smoothing;
+    using NodeSmoothing = remedies::LinearizedNodeSmoothing<dim>;
+    std::unique_ptr<NodeSmoothing>        node_smoothing;
+    std::unique_ptr<Epetra_CrsMatrix>     node_coupling;
+    dealii::TrilinosWrappers::MPI::Vector node_coupling_rhs;
+    std::vector<double>                   node_force_derivative;
+    /// per cell with node-smoothed particles: its vertices and reach
+    std::vector<unsigned int>                   node_cell_vertices;
+    typename NodalLinearSystem<dim>::NodeGroups node_cell_reach;
+    std::vector<typename Smoothing::Point>      points; ///< of one cell
     /// The loads of a point of the cell: body force (its nodal weight
     /// applied per entry) and the traction on its loaded face.
     struct PointLoads

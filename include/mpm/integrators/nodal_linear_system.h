@@ -72,9 +72,20 @@ namespace mpm
            const MPI_Comm             comm,
            const NodeGroups          &extra = NodeGroups());
 
-    /// The sparsity (and a zero matrix) of @p groups instead. Collective.
+    /// The sparsity (and a zero matrix) of @p groups instead, and of the
+    /// owned rows of @p node_coupling (node-by-node entries: every
+    /// direction of the two nodes couples). Collective.
     void
-    couple(const NodeGroups &groups);
+    couple(const NodeGroups       &groups,
+           const Epetra_CrsMatrix *node_coupling = nullptr);
+
+    /// The groups of reinit(): the owned cells' vertices and the extra
+    /// groups.
+    const NodeGroups &
+    cell_groups() const
+    {
+      return grid_groups;
+    }
 
     /**
      * Constraints of this step: every direction of a node whose @p active
@@ -179,10 +190,15 @@ namespace mpm
     add_cell_rhs(const dealii::Vector<double> &cell_rhs,
                  const std::vector<Index>     &indices);
 
-    /// Exchange the sums; constrained rows that no cell reached get a
-    /// diagonal so that the matrix is regular.
+    /// Exchange the sums and add @p coupling (if given; its sparsity
+    /// was given to couple()) to the matrix and @p rhs_change (owned
+    /// unknowns, condensed) to the right-hand side; constrained rows that
+    /// no cell reached get a diagonal so that the matrix is regular.
     void
-    finish_assembly(const bool with_matrix);
+    finish_assembly(
+      const bool                                   with_matrix,
+      const Epetra_CrsMatrix                      *coupling   = nullptr,
+      const dealii::TrilinosWrappers::MPI::Vector *rhs_change = nullptr);
 
     /// The norm of the assembled right-hand side (free unknowns only).
     double
@@ -248,6 +264,7 @@ namespace mpm
       dealii::TrilinosWrappers::MPI::Vector           &x);
 
     MPI_Comm                               comm = MPI_COMM_SELF;
+    NodeGroups                             grid_groups;
     std::vector<Index>                     node_to_global; ///< per local node
     dealii::IndexSet                       owned, relevant;
     dealii::AffineConstraints<double>      node_constraints;
