@@ -29,7 +29,7 @@ for f in glob.glob(f"{study}/*_*.txt"):
     half = q[len(q) // 2:]
     change = (half.max() - half.min()) / q[-1]
     runs.setdefault(variant, []).append((float(h), q[-1], change))
-colors = {"theta-bar": "C0", "filter": "C2", "standard": "C3"}
+colors = {"theta-bar": "C0", "node": "C1", "filter": "C2", "standard": "C3"}
 fig, ax = plt.subplots(figsize=(6, 4.5))
 print("| variant | h | q/c_u | q / Prandtl's - 1 | level |")
 print("|---|---|---|---|---|")

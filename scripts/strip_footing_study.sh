@@ -15,12 +15,13 @@
 # each variant with; a family other than standard is named in the
 # variant, e.g. theta-bar-cpGIMP; their domains are cut at the grid's
 # walls (Domain outside the grid = clamp). REMEDIES (default "standard
-# theta-bar") lists the variants; filter is the assumed-stress filter with
+# theta-bar") lists the variants; node is Volumetric smoothing = node (the
+# node average); filter is the assumed-stress filter with
 # the compliance metric; theta-bar-split is theta-bar with Implicit
 # solver/Preconditioner = AMG with cell pressure (the same curve, fewer
 # GMRES iterations). GHOST (default: the parameter file's 0.01) sets
-# Implicit solver/Ghost penalty; theta-bar runs with Particle volume =
-# smoothed unless PARTICLE_VOLUME=own. MIN_J=1 writes the particle tables
+# Implicit solver/Ghost penalty; theta-bar and node run with Particle
+# volume = smoothed unless PARTICLE_VOLUME=own. MIN_J=1 writes the particle tables
 # and adds the smallest volume ratio V/V0 of the soil at 0.2 B.
 # GEOMETRY=fixed runs with Implicit solver/Geometry = fixed (equilibrium
 # in the undeformed shape, the small-deformation analysis) and appends
@@ -55,6 +56,7 @@ for h in ${@:-0.25 0.125 0.0625}; do
     smoothing=none filter=none
     preconditioner=AMG
     [ $remedy = theta-bar ] && smoothing=cell
+    [ $remedy = node ] && smoothing=node
     [ $remedy = theta-bar-split ] && smoothing=cell preconditioner="AMG with cell pressure"
     [ $remedy = filter ] && filter="assumed stress"
     variant=$remedy

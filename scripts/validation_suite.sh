@@ -31,8 +31,9 @@
 #   water_column    scripts/water_column_study.sh + plot            1.8 min
 #   strip_footing   scripts/strip_footing_study.sh + plot, quasi-static,
 #                   standard MPM and CPDI at large deformation, and the
-#                   limit loads in a fixed geometry on graded grids
-#                   (doc/benchmarks/strip_footing.md)                 about 2 h
+#                   limit loads in a fixed geometry on graded grids,
+#                   the node average's too
+#                   (doc/benchmarks/strip_footing.md)               about 2.5 h
 #   ghost_penalty   scripts/ghost_penalty_study.sh, Cook's membrane of
 #                   neo-Hookean material at finite strain, every family
 #                   and beta (doc/guide/implicit.md)                40 s
@@ -221,6 +222,8 @@ part_strip_footing() {
     GRID=graded GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.002 SOLVER=direct \
       REMEDIES="theta-bar filter standard" "$study" "$res/strip-footing-limit" $limit &&
     $py "$root/scripts/plot_strip_footing_limit.py" "$res/strip-footing-limit" "$figs/strip_footing_limit.png" &&
+    GRID=graded GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.002 SOLVER=direct \
+      REMEDIES=node "$study" "$res/strip-footing-node" $limit &&
     for run in $edges; do
       GRID=graded EDGE=${run#*:} GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.001 SOLVER=direct \
         REMEDIES=theta-bar "$study" "$res/strip-footing-edge" ${run%%:*} || return 1
