@@ -9,7 +9,6 @@
 #include <mpm/particles/particle_layout.h>
 #include <mpm/remedies/assumed_stress_force.h>
 #include <mpm/remedies/stress_filter.h>
-#include <mpm/remedies/volumetric_smoothing.h>
 #include <mpm/shape_functions/family_registry.h>
 #include <mpm/solver/stress_update.h>
 #include <mpm/transfer/grid_to_particle.h>
@@ -20,7 +19,6 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
-#include <type_traits>
 
 namespace mpm
 {
@@ -882,33 +880,6 @@ namespace mpm
                         j * material_change(T, dh_eff));
     }
 
-    /**
-     * The node average's d h_eff / du_bk at the particle @p q, without the
-     * averages' own change (the coupling part, LinearizedNodeSmoothing):
-     * the rate form's e_k (x) G_b - (G_b)_k / d I, the total form's
-     * d(alpha f) = alpha e_k (x) G_b - alpha f (f^-T G_b)_k / d.
-     */
-    template <typename Point>
-    auto
-    node_local_derivative(const Point       &q,
-                          const bool         total,
-                          const unsigned int b,
-                          const unsigned int k)
-    {
-      constexpr int  dim = std::remove_reference_t<decltype(q.h)>::dimension;
-      Tensor<2, dim> d;
-      if (!total)
-        {
-          d[k] = q.G[b];
-          for (unsigned int i = 0; i < dim; ++i)
-            d[i][i] -= q.G[b][k] / dim;
-          return d;
-        }
-      const double dJ_J = (transpose(q.f_inv) * q.G[b])[k];
-      d                 = (-q.alpha * dJ_J / dim) * q.f;
-      d[k] += q.alpha * q.G[b];
-      return d;
-    }
   } // namespace
 
   template <int dim>
@@ -970,16 +941,8 @@ namespace mpm
           }
         if (node_smoothed)
           {
-            remedies::smooth_volume_change<dim>(
-              h_rate, F, determinant(q.F), J_bar, theta_bar);
-            q.alpha = std::pow(J_bar / determinant(q.F), 1. / dim);
-            h_eff   = h_rate;
-            if (total)
-              {
-                h_eff = q.alpha * q.f;
-                for (unsigned int d = 0; d < dim; ++d)
-                  h_eff[d][d] -= 1.;
-              }
+            Smoothing::smoothed_increment(
+              q, total, J_bar, theta_bar, h_rate, F, h_eff);
           }
         kinematics.velocity_gradient         = embed<dim>(h_rate / dt, 0.);
         kinematics.F                         = embed<dim>(F, 1.);
@@ -1087,9 +1050,12 @@ namespace mpm
                 Tensor<2, dim> dh;
                 dh[k] = q.G[b];
                 const Tensor<2, dim> dh_eff =
-                  smoothed      ? smoothing->derivative(q, total, b, k) :
-                  node_smoothed ? node_local_derivative(q, total, b, k) :
-                                  dh;
+                  smoothed ?
+                    smoothing->derivative(q, total, b, k) :
+                    // (the nodal averages' change is the coupling part)
+                    node_smoothed ?
+                    Smoothing::increment_derivative(q, total, b, k, 0.) :
+                    dh;
                 if (filtered)
                   {
                     filtered_changes[p * n + b * dim + k] =

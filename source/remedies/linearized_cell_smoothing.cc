@@ -77,13 +77,26 @@ namespace mpm
       Tensor<2, dim> &F_bar,
       Tensor<2, dim> &h_eff) const
     {
+      const Sums &s = sums[p.body];
+      smoothed_increment(
+        p, total, s.V / s.V0, s.V_n_tr_h / s.V_n, h_rate, F_bar, h_eff);
+    }
+
+    template <int dim>
+    void
+    LinearizedCellSmoothing<dim>::smoothed_increment(Point          &p,
+                                                     const bool      total,
+                                                     const double    J_bar,
+                                                     const double    theta_bar,
+                                                     Tensor<2, dim> &h_rate,
+                                                     Tensor<2, dim> &F_bar,
+                                                     Tensor<2, dim> &h_eff)
+    {
       // The explicit update's smoothing, with h = dt L for the rate.
-      const Sums  &s     = sums[p.body];
-      const double J     = determinant(p.F);
-      const double J_bar = s.V / s.V0;
-      h_rate             = p.h;
-      F_bar              = p.F;
-      smooth_volume_change<dim>(h_rate, F_bar, J, J_bar, s.V_n_tr_h / s.V_n);
+      const double J = determinant(p.F);
+      h_rate         = p.h;
+      F_bar          = p.F;
+      smooth_volume_change<dim>(h_rate, F_bar, J, J_bar, theta_bar);
       p.alpha = std::pow(J_bar / J, 1. / dim);
       if (!total)
         {
@@ -102,22 +115,36 @@ namespace mpm
                                              const unsigned int b,
                                              const unsigned int k) const
     {
-      const Sums    &s = sums[p.body];
+      const Sums &s = sums[p.body];
+      return increment_derivative(
+        p, total, b, k, total ? s.V_g[b][k] / s.V : s.V_n_G[b][k] / s.V_n);
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    LinearizedCellSmoothing<dim>::increment_derivative(
+      const Point       &p,
+      const bool         total,
+      const unsigned int b,
+      const unsigned int k,
+      const double       average_change)
+    {
       Tensor<2, dim> d;
       if (!total)
         {
-          // d h_bar = e_k (x) G_b + (G_bar_bk - G_bk)/d I
+          // d h_bar = e_k (x) G_b + (d theta_bar - G_bk)/d I
           d[k]           = p.G[b];
-          const double v = (s.V_n_G[b][k] / s.V_n - p.G[b][k]) / dim;
+          const double v = (average_change - p.G[b][k]) / dim;
           for (unsigned int i = 0; i < dim; ++i)
             d[i][i] += v;
           return d;
         }
       // d(alpha f) = alpha e_k (x) G_b + f d alpha, with
       // d alpha / alpha = (d J_bar / J_bar - d J / J) / d,
-      // d J / J = (f^-T G_b)_k and d J_bar / J_bar = sum V f^-T G_b / sum V.
+      // d J / J = (f^-T G_b)_k (the cell's d J_bar / J_bar = sum V f^-T
+      // G_b / sum V).
       const double dJ_J    = (transpose(p.f_inv) * p.G[b])[k];
-      const double d_alpha = p.alpha * (s.V_g[b][k] / s.V - dJ_J) / dim;
+      const double d_alpha = p.alpha * (average_change - dJ_J) / dim;
       d                    = d_alpha * p.f;
       d[k] += p.alpha * p.G[b];
       return d;

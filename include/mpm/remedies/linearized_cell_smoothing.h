@@ -98,6 +98,33 @@ namespace mpm
                  const unsigned int k) const;
 
       /**
+       * The kinematics of material_increment() for given averages: the
+       * volume ratio @p J_bar (total form) and the trace @p theta_bar of
+       * h (rate form), whichever neighbourhood they average over (the
+       * cell, or the nodes: LinearizedNodeSmoothing). Sets p.alpha.
+       */
+      static void
+      smoothed_increment(Point                  &p,
+                         const bool              total,
+                         const double            J_bar,
+                         const double            theta_bar,
+                         dealii::Tensor<2, dim> &h_rate,
+                         dealii::Tensor<2, dim> &F_bar,
+                         dealii::Tensor<2, dim> &h_eff);
+
+      /**
+       * d h_eff / d u_bk as derivative(), for an average whose own
+       * derivative by u_bk is @p average_change: d theta_bar (rate form)
+       * or d J_bar / J_bar (total form); 0 holds the average fixed.
+       */
+      static dealii::Tensor<2, dim>
+      increment_derivative(const Point       &p,
+                           const bool         total,
+                           const unsigned int b,
+                           const unsigned int k,
+                           const double       average_change);
+
+      /**
        * The stiff part lambda g b^T / V of the smoothed tangent of body
        * @p b in the cell (entries [a dim + k] for node a of the cell's
        * list, direction k): the pressure's force takes g = sum V f^-T
