@@ -60,7 +60,18 @@ namespace mpm
         /// lambda + 2 mu (3D, plane strain, uniaxial strain), E/(1-nu^2)
         /// (plane stress) or E (uniaxial stress).
         double
-        p_wave_modulus(const KinematicAssumption k) const;
+        p_wave_modulus(const KinematicAssumption k) const
+        {
+          switch (k)
+            {
+              case KinematicAssumption::plane_stress:
+                return E / (1 - nu * nu);
+              case KinematicAssumption::uniaxial_stress:
+                return E;
+              default:
+                return lambda() + 2 * mu();
+            }
+        }
 
       private:
         double E, nu, lame_lambda, shear_modulus;
@@ -104,7 +115,7 @@ namespace mpm
        * embedded 3x3 tensor) under the assumption @p k. Components that the
        * assumption keeps at zero stay zero.
        */
-      dealii::SymmetricTensor<2, 3>
+      inline dealii::SymmetricTensor<2, 3>
       stress_increment(const IsotropicConstants            &c,
                        const dealii::SymmetricTensor<2, 3> &d_eps,
                        const KinematicAssumption            k);
@@ -149,13 +160,13 @@ namespace mpm
       /// w = dt (L_xy - L_yx) / 4, in closed form. The same result as
       /// rotate(stress, hughes_winget_rotation(L, dt)) to round-off, at a
       /// fraction of its cost.
-      dealii::SymmetricTensor<2, 3>
+      inline dealii::SymmetricTensor<2, 3>
       rotate_about_z(const dealii::SymmetricTensor<2, 3> &stress,
                      const double                         w);
 
       /// Set the components that the assumption @p k keeps at zero to zero
       /// (plane stress: zz, xz, yz; uniaxial stress: all but xx).
-      void
+      inline void
       zero_constrained_components(dealii::SymmetricTensor<2, 3> &stress,
                                   const KinematicAssumption      k);
 
@@ -172,12 +183,115 @@ namespace mpm
        * skew(G)/2. With the midpoint gradient a rigid rotation of any step
        * turns the stress exactly and strains it not at all.
        */
-      void
+      inline void
       hypoelastic_update(const IsotropicConstants      &c,
                          const PointKinematics         &kinematics,
                          const KinematicAssumption      k,
                          const StrainIncrement          increment,
                          dealii::SymmetricTensor<2, 3> &stress);
+
+      // The particle loops call these for every particle and step: their
+      // definitions are here so that the compiler inlines them.
+      inline __attribute__((always_inline)) dealii::SymmetricTensor<2, 3>
+      stress_increment(const IsotropicConstants            &c,
+                       const dealii::SymmetricTensor<2, 3> &d_eps,
+                       const KinematicAssumption            k)
+      {
+        const double                  mu = c.mu();
+        dealii::SymmetricTensor<2, 3> d_sigma;
+        switch (k)
+          {
+              case KinematicAssumption::plane_stress: {
+                // Eliminating eps_zz with sigma_zz = 0 gives the in-plane
+                // law with a reduced lambda.
+                const double lambda      = c.lambda();
+                const double lambda_star = 2 * lambda * mu / (lambda + 2 * mu);
+                const double trace_2d    = d_eps[0][0] + d_eps[1][1];
+                for (unsigned int i = 0; i < 2; ++i)
+                  for (unsigned int j = i; j < 2; ++j)
+                    d_sigma[i][j] = 2 * mu * d_eps[i][j];
+                d_sigma[0][0] += lambda_star * trace_2d;
+                d_sigma[1][1] += lambda_star * trace_2d;
+                break;
+              }
+            case KinematicAssumption::uniaxial_stress:
+              d_sigma[0][0] = c.youngs_modulus() * d_eps[0][0];
+              break;
+            default:
+              // 3D, plane strain and uniaxial strain: the constrained
+              // strains are zero in d_eps, the stresses follow from the
+              // full law.
+              d_sigma = c.lambda() * dealii::trace(d_eps) *
+                          dealii::unit_symmetric_tensor<3>() +
+                        2 * mu * d_eps;
+          }
+        return d_sigma;
+      }
+
+
+      inline __attribute__((always_inline)) dealii::SymmetricTensor<2, 3>
+      rotate_about_z(const dealii::SymmetricTensor<2, 3> &stress,
+                     const double                         w)
+      {
+        // R = [[c, s, 0], [-s, c, 0], [0, 0, 1]] with
+        // c = (1 - w^2) / (1 + w^2), s = 2 w / (1 + w^2).
+        const double k = 1. / (1. + w * w);
+        const double c = (1. - w * w) * k, s = 2. * w * k;
+        const double xx = stress[0][0], yy = stress[1][1], xy = stress[0][1];
+        const double xz = stress[0][2], yz = stress[1][2];
+        dealii::SymmetricTensor<2, 3> r;
+        r[0][0] = c * c * xx + 2. * c * s * xy + s * s * yy;
+        r[1][1] = s * s * xx - 2. * c * s * xy + c * c * yy;
+        r[0][1] = c * s * (yy - xx) + (c * c - s * s) * xy;
+        r[0][2] = c * xz + s * yz;
+        r[1][2] = c * yz - s * xz;
+        r[2][2] = stress[2][2];
+        return r;
+      }
+
+
+      inline __attribute__((always_inline)) void
+      zero_constrained_components(dealii::SymmetricTensor<2, 3> &stress,
+                                  const KinematicAssumption      k)
+      {
+        switch (k)
+          {
+            case KinematicAssumption::plane_stress:
+              stress[2][2] = 0;
+              stress[0][2] = 0;
+              stress[1][2] = 0;
+              break;
+              case KinematicAssumption::uniaxial_stress: {
+                const double sigma_xx = stress[0][0];
+                stress                = 0;
+                stress[0][0]          = sigma_xx;
+                break;
+              }
+            default:
+              break;
+          }
+      }
+
+
+      inline void
+      hypoelastic_update(const IsotropicConstants      &c,
+                         const PointKinematics         &kinematics,
+                         const KinematicAssumption      k,
+                         const StrainIncrement          increment,
+                         dealii::SymmetricTensor<2, 3> &stress)
+      {
+        // (the start of the step's G = h inline: the common case)
+        const dealii::Tensor<2, 3> G =
+          increment == StrainIncrement::start_of_step ?
+            kinematics.dt * kinematics.velocity_gradient :
+            increment_gradient(kinematics, increment);
+        if (G[0][2] == 0. && G[1][2] == 0. && G[2][0] == 0. && G[2][1] == 0.)
+          stress = rotate_about_z(stress, 0.25 * (G[0][1] - G[1][0]));
+        else
+          stress = rotate(stress, hughes_winget_rotation(G, 1.));
+        stress += stress_increment(c, dealii::symmetrize(G), k);
+        zero_constrained_components(stress, k);
+      }
     } // namespace elasticity
   }   // namespace materials
 } // namespace mpm
