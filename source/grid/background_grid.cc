@@ -66,6 +66,7 @@ namespace mpm
 
     owned_cell_list.clear();
     occupied_cell_list.clear();
+    particles_changed_cells();
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         owned_cell_list.push_back(cell);

@@ -29,6 +29,7 @@ namespace mpm
   SimulationState<dim>::relocate_moved_particles()
   {
     lost_messages.clear();
+    background.particles_changed_cells();
     if (!relocate_particles(background, particle_handler, comm))
       {
         // deal.II's sort drops a particle whose new cell lies beyond the

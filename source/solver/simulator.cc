@@ -171,6 +171,9 @@ namespace mpm
   Simulator<dim>::do_time_step(const double dt)
   {
     state.last_dt = dt;
+    // (whatever changed the particles between steps, the step's first
+    // loop checks their cells)
+    state.background.particles_changed_cells();
     if (state.balancer && state.balancer->due(state.current_step))
       repartition();
     integrator->advance(dt);

@@ -93,6 +93,29 @@ namespace mpm
       return occupied_cell_list;
     }
 
+    /// Whether cells_with_particles() has been checked against @p
+    /// particles since they last changed cells (particles_changed_cells(),
+    /// or a change of their number), and mark it so.
+    template <typename Handler>
+    bool
+    check_cells_with_particles(const Handler &particles) const
+    {
+      const bool checked =
+        checked_handler == &particles &&
+        checked_count == particles.n_locally_owned_particles();
+      checked_handler = &particles;
+      checked_count   = particles.n_locally_owned_particles();
+      return checked;
+    }
+
+    /// Particles may be in other cells now (moved, sorted, inserted,
+    /// removed): the next particle loop checks cells_with_particles().
+    void
+    particles_changed_cells() const
+    {
+      checked_handler = nullptr;
+    }
+
     /// Geometry of an owned or ghost cell.
     const shape_functions::Q1Cell<dim> &
     geometry(const typename dealii::Triangulation<dim>::active_cell_iterator
@@ -315,6 +338,8 @@ namespace mpm
     std::vector<shape_functions::Q1Cell<dim>>                  cell_geometry;
     std::vector<ActiveCell>                                    owned_cell_list;
     mutable std::vector<ActiveCell> occupied_cell_list;
+    mutable const void             *checked_handler = nullptr;
+    mutable std::size_t             checked_count   = 0;
     std::vector<unsigned int>       cell_nodes;
     std::vector<unsigned int>       neighbors;
     std::vector<double>             cell_heights;

@@ -25,16 +25,22 @@ namespace mpm
     // and a grid may be much larger than its bodies, whose empty cells
     // then cost nothing. The list stays in active cell index order, so
     // sums over cells keep their order (bit-identical runs and restarts).
-    auto                          &cells = grid.cells_with_particles();
-    dealii::types::particle_index held  = 0;
-    for (const auto &cell : cells)
-      held += particles.n_particles_in_cell(cell);
-    if (held != particles.n_locally_owned_particles())
+    // It is checked once after the particles changed cells (the loops of
+    // one step between two relocations share the check: counting the
+    // particles of each cell costs deal.II a cell lookup).
+    auto &cells = grid.cells_with_particles();
+    if (!grid.check_cells_with_particles(particles))
       {
-        cells.clear();
-        for (const auto &cell : grid.owned_cells())
-          if (particles.n_particles_in_cell(cell) > 0)
-            cells.push_back(cell);
+        dealii::types::particle_index held = 0;
+        for (const auto &cell : cells)
+          held += particles.n_particles_in_cell(cell);
+        if (held != particles.n_locally_owned_particles())
+          {
+            cells.clear();
+            for (const auto &cell : grid.owned_cells())
+              if (particles.n_particles_in_cell(cell) > 0)
+                cells.push_back(cell);
+          }
       }
     for (const auto &cell : cells)
       {
