@@ -29,7 +29,6 @@ namespace mpm
   SimulationState<dim>::relocate_moved_particles()
   {
     lost_messages.clear();
-    background.particles_changed_cells();
     if (!relocate_particles(background, particle_handler, comm))
       {
         // deal.II's sort drops a particle whose new cell lies beyond the
@@ -54,6 +53,9 @@ namespace mpm
             "may move a particle by about one cell at most (take a "
             "smaller Time step, or run on one rank)");
       }
+    // The particles are in their new cells: the next loop checks the list
+    // of cells with particles.
+    background.particles_changed_cells();
     if (!lost_messages.empty() && !params.boundary.remove_lost_particles)
       local_error.record(lost_messages.front() +
                          " (set Boundary conditions/Particles leaving the "

@@ -4,7 +4,10 @@
 // - particles are sorted into cells correctly by the project's own
 //   relocation (reference coordinates map back to the position, and
 //   deal.II's own sort afterwards changes nothing);
-// - no particle is lost or duplicated.
+// - no particle is lost or duplicated;
+// - a particle loop between two steps (output, the time step) visits
+//   every particle, also those that entered cells empty before the step.
+#include <mpm/particles/cell_loop.h>
 #include <mpm/particles/particle_layout.h>
 
 #include "../tests.h"
@@ -35,8 +38,21 @@ end)");
   auto             &sim = *c.simulator;
   const auto        n0  = sim.particles().n_global_particles();
   const double      dt  = 1e-3;
+  double missed         = 0; // most particles a loop after a step did not visit
   for (unsigned int n = 0; n < 500; ++n) // 0.5 m: about four cells
-    sim.do_time_step(dt);
+    {
+      sim.do_time_step(dt);
+      double visited = 0;
+      mpm::for_each_cell_with_particles(
+        sim.grid(), sim.particles(), [&](const auto &, const auto &pic) {
+          for (auto p = pic.begin(); p != pic.end(); ++p)
+            ++visited;
+        });
+      missed =
+        std::max(missed,
+                 double(sim.particles().n_locally_owned_particles()) - visited);
+    }
+  missed         = dealii::Utilities::MPI::max(missed, MPI_COMM_WORLD);
   const double t = sim.time();
 
   double             max_position = 0, max_stress = 0, max_mapping = 0;
@@ -98,4 +114,5 @@ end)");
   // deal.II's inverse mapping stops at about 1e-11; a particle in the
   // wrong cell would differ by O(1).
   mpm_test::check_small("change by deal.II's sort", moved, 1e-8);
+  mpm_test::check_small("particles a loop after a step missed", missed, 0);
 }
