@@ -141,36 +141,16 @@ namespace mpm
 
 
 
-      namespace
-      {
-        /// M with G = h M: I on the start-of-step configuration,
-        /// (I + h/2)^-1 on the midpoint one. The step moves x_n to
-        /// x_n + h x_n; the displacement's gradient on the midpoint
-        /// configuration x_n + h x_n / 2 is h (I + h/2)^-1. For a rigid
-        /// rotation the grid gives h = R - I exactly (positions move by
-        /// it), and G = 2 (R - I)(R + I)^-1 is skew: no strain, and the
-        /// Cayley rotation of its half is R.
-        Tensor<2, 3>
-        to_increment_gradient(const Tensor<2, 3>   &h,
-                              const StrainIncrement increment)
-        {
-          const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
-          return increment == StrainIncrement::midpoint ?
-                   dealii::invert(I + 0.5 * h) :
-                   I;
-        }
-      } // namespace
-
-
-
+      /// The step moves x_n to x_n + h x_n; the displacement's gradient
+      /// on the midpoint configuration x_n + h x_n / 2 is h (I + h/2)^-1.
+      /// For a rigid rotation the grid gives h = R - I exactly (positions
+      /// move by it), and G = 2 (R - I)(R + I)^-1 is skew: no strain, and
+      /// the Cayley rotation of its half is R.
       Tensor<2, 3>
-      increment_gradient(const PointKinematics &kinematics,
-                         const StrainIncrement  increment)
+      midpoint_map(const Tensor<2, 3> &h)
       {
-        const Tensor<2, 3> h = kinematics.dt * kinematics.velocity_gradient;
-        if (increment == StrainIncrement::start_of_step)
-          return h;
-        return h * to_increment_gradient(h, increment);
+        const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
+        return dealii::invert(I + 0.5 * h);
       }
 
 
@@ -186,7 +166,7 @@ namespace mpm
         const Tensor<2, 3> h = kinematics.dt * kinematics.velocity_gradient;
         const Tensor<2, 3> I = dealii::unit_symmetric_tensor<3>();
         const bool         midpoint    = increment == StrainIncrement::midpoint;
-        const Tensor<2, 3> M           = to_increment_gradient(h, increment);
+        const Tensor<2, 3> M           = midpoint ? midpoint_map(h) : I;
         const Tensor<2, 3> G           = h * M;
         const Tensor<2, 3> A           = 0.25 * (G - dealii::transpose(G));
         const Tensor<2, 3> R           = hughes_winget_rotation(G, 1.);

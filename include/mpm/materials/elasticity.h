@@ -110,15 +110,49 @@ namespace mpm
       IsotropicConstants
       parse_parameters(dealii::ParameterHandler &prm);
 
+      // The particle loops call the inline functions below for every
+      // particle and step: defined here so that the compiler inlines them.
+
       /**
        * Elastic stress increment for the strain increment @p d_eps (an
        * embedded 3x3 tensor) under the assumption @p k. Components that the
        * assumption keeps at zero stay zero.
        */
-      inline dealii::SymmetricTensor<2, 3>
+      inline __attribute__((always_inline)) dealii::SymmetricTensor<2, 3>
       stress_increment(const IsotropicConstants            &c,
                        const dealii::SymmetricTensor<2, 3> &d_eps,
-                       const KinematicAssumption            k);
+                       const KinematicAssumption            k)
+      {
+        const double                  mu = c.mu();
+        dealii::SymmetricTensor<2, 3> d_sigma;
+        switch (k)
+          {
+              case KinematicAssumption::plane_stress: {
+                // Eliminating eps_zz with sigma_zz = 0 gives the in-plane
+                // law with a reduced lambda.
+                const double lambda      = c.lambda();
+                const double lambda_star = 2 * lambda * mu / (lambda + 2 * mu);
+                const double trace_2d    = d_eps[0][0] + d_eps[1][1];
+                for (unsigned int i = 0; i < 2; ++i)
+                  for (unsigned int j = i; j < 2; ++j)
+                    d_sigma[i][j] = 2 * mu * d_eps[i][j];
+                d_sigma[0][0] += lambda_star * trace_2d;
+                d_sigma[1][1] += lambda_star * trace_2d;
+                break;
+              }
+            case KinematicAssumption::uniaxial_stress:
+              d_sigma[0][0] = c.youngs_modulus() * d_eps[0][0];
+              break;
+            default:
+              // 3D, plane strain and uniaxial strain: the constrained
+              // strains are zero in d_eps, the stresses follow from the
+              // full law.
+              d_sigma = c.lambda() * dealii::trace(d_eps) *
+                          dealii::unit_symmetric_tensor<3>() +
+                        2 * mu * d_eps;
+          }
+        return d_sigma;
+      }
 
       /**
        * d sigma_ij / d h_kl of hypoelastic_update() (h = dt L): with the
@@ -160,75 +194,6 @@ namespace mpm
       /// w = dt (L_xy - L_yx) / 4, in closed form. The same result as
       /// rotate(stress, hughes_winget_rotation(L, dt)) to round-off, at a
       /// fraction of its cost.
-      inline dealii::SymmetricTensor<2, 3>
-      rotate_about_z(const dealii::SymmetricTensor<2, 3> &stress,
-                     const double                         w);
-
-      /// Set the components that the assumption @p k keeps at zero to zero
-      /// (plane stress: zz, xz, yz; uniaxial stress: all but xx).
-      inline void
-      zero_constrained_components(dealii::SymmetricTensor<2, 3> &stress,
-                                  const KinematicAssumption      k);
-
-      /// Gradient G of the step's displacement h x (h = dt L) on the
-      /// configuration chosen by @p increment.
-      dealii::Tensor<2, 3>
-      increment_gradient(const PointKinematics &kinematics,
-                         const StrainIncrement  increment);
-
-      /**
-       * Incrementally objective hypoelastic update (Jaumann rate) of
-       * Hughes and Winget (1980): with the increment gradient G,
-       * stress <- R stress R^T + C : sym(G), R the Cayley transform of
-       * skew(G)/2. With the midpoint gradient a rigid rotation of any step
-       * turns the stress exactly and strains it not at all.
-       */
-      inline void
-      hypoelastic_update(const IsotropicConstants      &c,
-                         const PointKinematics         &kinematics,
-                         const KinematicAssumption      k,
-                         const StrainIncrement          increment,
-                         dealii::SymmetricTensor<2, 3> &stress);
-
-      // The particle loops call these for every particle and step: their
-      // definitions are here so that the compiler inlines them.
-      inline __attribute__((always_inline)) dealii::SymmetricTensor<2, 3>
-      stress_increment(const IsotropicConstants            &c,
-                       const dealii::SymmetricTensor<2, 3> &d_eps,
-                       const KinematicAssumption            k)
-      {
-        const double                  mu = c.mu();
-        dealii::SymmetricTensor<2, 3> d_sigma;
-        switch (k)
-          {
-              case KinematicAssumption::plane_stress: {
-                // Eliminating eps_zz with sigma_zz = 0 gives the in-plane
-                // law with a reduced lambda.
-                const double lambda      = c.lambda();
-                const double lambda_star = 2 * lambda * mu / (lambda + 2 * mu);
-                const double trace_2d    = d_eps[0][0] + d_eps[1][1];
-                for (unsigned int i = 0; i < 2; ++i)
-                  for (unsigned int j = i; j < 2; ++j)
-                    d_sigma[i][j] = 2 * mu * d_eps[i][j];
-                d_sigma[0][0] += lambda_star * trace_2d;
-                d_sigma[1][1] += lambda_star * trace_2d;
-                break;
-              }
-            case KinematicAssumption::uniaxial_stress:
-              d_sigma[0][0] = c.youngs_modulus() * d_eps[0][0];
-              break;
-            default:
-              // 3D, plane strain and uniaxial strain: the constrained
-              // strains are zero in d_eps, the stresses follow from the
-              // full law.
-              d_sigma = c.lambda() * dealii::trace(d_eps) *
-                          dealii::unit_symmetric_tensor<3>() +
-                        2 * mu * d_eps;
-          }
-        return d_sigma;
-      }
-
-
       inline __attribute__((always_inline)) dealii::SymmetricTensor<2, 3>
       rotate_about_z(const dealii::SymmetricTensor<2, 3> &stress,
                      const double                         w)
@@ -249,7 +214,8 @@ namespace mpm
         return r;
       }
 
-
+      /// Set the components that the assumption @p k keeps at zero to zero
+      /// (plane stress: zz, xz, yz; uniaxial stress: all but xx).
       inline __attribute__((always_inline)) void
       zero_constrained_components(dealii::SymmetricTensor<2, 3> &stress,
                                   const KinematicAssumption      k)
@@ -272,7 +238,29 @@ namespace mpm
           }
       }
 
+      /// M with G = h M for the midpoint configuration: (I + h/2)^-1.
+      dealii::Tensor<2, 3>
+      midpoint_map(const dealii::Tensor<2, 3> &h);
 
+      /// Gradient G of the step's displacement h x (h = dt L) on the
+      /// configuration chosen by @p increment.
+      inline dealii::Tensor<2, 3>
+      increment_gradient(const PointKinematics &kinematics,
+                         const StrainIncrement  increment)
+      {
+        dealii::Tensor<2, 3> G = kinematics.dt * kinematics.velocity_gradient;
+        if (increment == StrainIncrement::midpoint)
+          G = G * midpoint_map(G);
+        return G;
+      }
+
+      /**
+       * Incrementally objective hypoelastic update (Jaumann rate) of
+       * Hughes and Winget (1980): with the increment gradient G,
+       * stress <- R stress R^T + C : sym(G), R the Cayley transform of
+       * skew(G)/2. With the midpoint gradient a rigid rotation of any step
+       * turns the stress exactly and strains it not at all.
+       */
       inline void
       hypoelastic_update(const IsotropicConstants      &c,
                          const PointKinematics         &kinematics,
@@ -280,11 +268,8 @@ namespace mpm
                          const StrainIncrement          increment,
                          dealii::SymmetricTensor<2, 3> &stress)
       {
-        // (the start of the step's G = h inline: the common case)
         const dealii::Tensor<2, 3> G =
-          increment == StrainIncrement::start_of_step ?
-            kinematics.dt * kinematics.velocity_gradient :
-            increment_gradient(kinematics, increment);
+          increment_gradient(kinematics, increment);
         if (G[0][2] == 0. && G[1][2] == 0. && G[2][0] == 0. && G[2][1] == 0.)
           stress = rotate_about_z(stress, 0.25 * (G[0][1] - G[1][0]));
         else
