@@ -12,8 +12,10 @@
 #            balancing (p4est's equal cell counts give most particles to
 #            one rank); corner-balanced: the same balanced at set-up and
 #            every 50 steps; unbalanced: standard without the set-up
-#            balance. All but corner and unbalanced are balanced at set-up
-#            (Load balancing/Balance at set-up, on by default).
+#            balance; wide: standard in a grid of four times the area,
+#            [-1, 2]^2, around the same block. All but corner and
+#            unbalanced are balanced at set-up (Load balancing/Balance at
+#            set-up, on by default).
 #   ranks:   the rank counts to run, e.g. "1" or "1 2" (default)
 # DIM=3: the same in 3D (prm/throughput_3d.prm; cells default 32, i.e.
 # 262 144 particles as the 2D default).

@@ -7,23 +7,25 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dim=$1 cells=$2 variant=$3
-family=standard remedy="" upper=1.25 grid=$((cells * 3 / 2)) interval=0
+family=standard remedy="" lower=-0.25 upper=1.25 grid=$((cells * 3 / 2)) interval=0
 at_setup=true
 case "$variant" in
   standard) ;;
   unbalanced) at_setup=false ;;
   corner) upper=2.25 grid=$((cells * 5 / 2)) at_setup=false ;;
   corner-balanced) upper=2.25 grid=$((cells * 5 / 2)) interval=50 ;;
+  wide) lower=-1 upper=2 grid=$((cells * 3)) ;;
   filter) remedy="set Stress filter = assumed stress" ;;
   theta-bar) remedy="set Volumetric smoothing = cell" ;;
   uGIMP|cpGIMP|CPDI|CPDI2) family=$variant ;;
   *) echo "unknown variant '$variant'" >&2; exit 1 ;;
 esac
-corner=$upper
-[ "$dim" = 3 ] && corner="$upper, $upper"
+corner=$upper low=$lower
+[ "$dim" = 3 ] && corner="$upper, $upper" low="$lower, $lower"
 cat <<PRM
 include $root/prm/throughput_${dim}d.prm
 subsection Grid
+  set Lower corner = $lower, $low
   set Upper corner = $upper, $corner
   set Subdivisions = $grid
 end

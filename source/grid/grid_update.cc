@@ -22,6 +22,29 @@ namespace mpm
         << grid.node_position(i) << ")";
       return s.str();
     }
+
+    /// @p node_pass on the active nodes of @p active (the other nodes of
+    /// @p kinematics, with @p nc components each, zeroed), or on every
+    /// owned node.
+    template <int dim, typename NodePass>
+    void
+    for_each_node(const BackgroundGrid<dim> &grid,
+                  ActiveNodes               *active,
+                  NodalVector               &kinematics,
+                  const unsigned int         nc,
+                  const NodePass            &node_pass)
+    {
+      if (!active)
+        {
+          for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
+            node_pass(i);
+          return;
+        }
+      active->zero_inactive(kinematics, nc);
+      for (const unsigned int i : active->nodes())
+        node_pass(i);
+      active->record(kinematics);
+    }
   } // namespace
 
   template <int dim>
@@ -31,15 +54,16 @@ namespace mpm
               const double               dt,
               const double               damping,
               const double               min_mass,
-              NodalVector               &kinematics)
+              NodalVector               &kinematics,
+              ActiveNodes               *active)
   {
     using P           = P2GLayout<dim>;
     using K           = KinematicsLayout<dim>;
     const double *in  = p2g.begin();
     double       *out = kinematics.begin();
     std::string   error;
-    for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
-      {
+    for_each_node(
+      grid, active, kinematics, K::n_components, [&](const unsigned int i) {
         const double *node = in + i * P::n_components;
         double       *k    = out + i * K::n_components;
         const double  m    = node[P::mass];
@@ -49,7 +73,7 @@ namespace mpm
               error = describe_node(grid, i, "mass");
             for (unsigned int c = 0; c < K::n_components; ++c)
               k[c] = 0;
-            continue;
+            return;
           }
         double p[dim], f[dim];
         for (unsigned int d = 0; d < dim; ++d)
@@ -66,7 +90,7 @@ namespace mpm
             if (!std::isfinite(k[K::velocity + d]) && error.empty())
               error = describe_node(grid, i, "velocity");
           }
-      }
+      });
     kinematics.update_ghost_values();
     return error;
   }
@@ -79,13 +103,14 @@ namespace mpm
                  const unsigned int         momentum_components,
                  const unsigned int         momentum_offset,
                  const double               min_mass,
-                 NodalVector               &kinematics)
+                 NodalVector               &kinematics,
+                 ActiveNodes               *active)
   {
     using P = P2GLayout<dim>;
     using K = KinematicsLayout<dim>;
     std::string error;
-    for (unsigned int i = 0; i < grid.n_owned_nodes(); ++i)
-      {
+    for_each_node(
+      grid, active, kinematics, K::n_components, [&](const unsigned int i) {
         const double m = p2g.local_element(i * P::n_components + P::mass);
         double       v[dim];
         for (unsigned int d = 0; d < dim; ++d)
@@ -101,7 +126,7 @@ namespace mpm
             if (!std::isfinite(v[d]) && error.empty())
               error = describe_node(grid, i, "velocity");
           }
-      }
+      });
     kinematics.update_ghost_values();
     return error;
   }
@@ -112,21 +137,24 @@ namespace mpm
                  double,
                  double,
                  double,
-                 NodalVector &);
+                 NodalVector &,
+                 ActiveNodes *);
   template std::string
   update_grid<2>(const BackgroundGrid<2> &,
                  const NodalVector &,
                  double,
                  double,
                  double,
-                 NodalVector &);
+                 NodalVector &,
+                 ActiveNodes *);
   template std::string
   update_grid<3>(const BackgroundGrid<3> &,
                  const NodalVector &,
                  double,
                  double,
                  double,
-                 NodalVector &);
+                 NodalVector &,
+                 ActiveNodes *);
   template std::string
   nodal_velocity<1>(const BackgroundGrid<1> &,
                     const NodalVector &,
@@ -134,7 +162,8 @@ namespace mpm
                     unsigned int,
                     unsigned int,
                     double,
-                    NodalVector &);
+                    NodalVector &,
+                    ActiveNodes *);
   template std::string
   nodal_velocity<2>(const BackgroundGrid<2> &,
                     const NodalVector &,
@@ -142,7 +171,8 @@ namespace mpm
                     unsigned int,
                     unsigned int,
                     double,
-                    NodalVector &);
+                    NodalVector &,
+                    ActiveNodes *);
   template std::string
   nodal_velocity<3>(const BackgroundGrid<3> &,
                     const NodalVector &,
@@ -150,5 +180,6 @@ namespace mpm
                     unsigned int,
                     unsigned int,
                     double,
-                    NodalVector &);
+                    NodalVector &,
+                    ActiveNodes *);
 } // namespace mpm

@@ -188,7 +188,8 @@ namespace mpm
                                                   *state.stress_filter,
                                                   state.current_time,
                                                   content,
-                                                  p2g(f)};
+                                                  p2g(f),
+                                                  active_nodes()};
           state.local_error.record(transfer::particle_to_grid(context));
         }
     }
@@ -216,7 +217,8 @@ namespace mpm
                        transfer::P2GLayout<dim>::n_components,
                        transfer::P2GLayout<dim>::momentum,
                        state.min_nodal_mass,
-                       kinematics(f)));
+                       kinematics(f),
+                       active_nodes()));
   }
 
   template <int dim>
@@ -230,7 +232,8 @@ namespace mpm
                                                   dt,
                                                   state.params.time.damping,
                                                   state.min_nodal_mass,
-                                                  kinematics(f)));
+                                                  kinematics(f),
+                                                  active_nodes()));
   }
 
   template <int dim>
@@ -265,7 +268,8 @@ namespace mpm
                                   kinematics(f),
                                   dt,
                                   state.params.time.flip_fraction,
-                                  fused_remap ? &remap(f) : nullptr}));
+                                  fused_remap ? &remap(f) : nullptr,
+                                  active_nodes()}));
   }
 
   template <int dim>
@@ -281,7 +285,8 @@ namespace mpm
                                               dim,
                                               0,
                                               state.min_nodal_mass,
-                                              kinematics(f)));
+                                              kinematics(f),
+                                              active_nodes()));
   }
 
   template <int dim>
@@ -340,6 +345,15 @@ namespace mpm
   ExplicitIntegrator<dim>::remap(const unsigned int f)
   {
     return state.contact ? state.contact->remap(f) : state.remap;
+  }
+
+  template <int dim>
+  ActiveNodes *
+  ExplicitIntegrator<dim>::active_nodes()
+  {
+    if (state.contact || !state.force_pass_hooks.empty())
+      return nullptr;
+    return &state.active_nodes;
   }
 
   template <int dim>

@@ -17,6 +17,7 @@ namespace mpm
     background.initialize_vector(kinematics,
                                  KinematicsLayout<dim>::n_components);
     background.initialize_vector(remap, dim);
+    active_nodes.reset(*background.node_partitioner());
     if (contact)
       contact->initialize_vectors(background);
     if (remedies::VolumetricSmoothing<dim>::through_nodes(bodies))

@@ -29,7 +29,10 @@ namespace mpm
         double *momentum = nullptr;
         if (c.remap)
           {
-            *c.remap = 0.;
+            if (c.active)
+              c.active->zero(*c.remap, dim);
+            else
+              *c.remap = 0.;
             momentum = c.remap->begin();
           }
         const double *in   = c.kinematics.begin();
@@ -98,7 +101,11 @@ namespace mpm
           });
         weights.end_pass(error.empty());
         if (c.remap)
-          c.remap->compress(VectorOperation::add);
+          {
+            c.remap->compress(VectorOperation::add);
+            if (c.active)
+              c.active->record(*c.remap);
+          }
         return error;
       }
     } // namespace

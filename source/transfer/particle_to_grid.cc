@@ -50,10 +50,19 @@ namespace mpm
         // The USF force pass adds to the mass and momentum of the first
         // pass (whose ghost entries compress() has already zeroed).
         if (c.content != P2GContent::force)
-          c.nodal = 0.;
-        double *const out = c.nodal.begin();
-        std::string   error;
-        Weights       weights(c.grid, c.domains);
+          {
+            if (c.active)
+              {
+                c.active->clear_marks();
+                c.active->zero(c.nodal, P::n_components);
+              }
+            else
+              c.nodal = 0.;
+          }
+        double *const        out   = c.nodal.begin();
+        unsigned char *const marks = c.active ? c.active->marks() : nullptr;
+        std::string          error;
+        Weights              weights(c.grid, c.domains);
         // a fluid's cell pressure acts over its cell
         remedies::CellPressureForce<dim> cell_pressure(c.bodies);
         const bool over_cell = do_force && cell_pressure.any();
@@ -65,7 +74,7 @@ namespace mpm
             weights.begin_cell(cell);
             if (over_cell)
               cell_pressure.begin_cell(c.grid.geometry(cell));
-            Sum sum(out, P::n_components);
+            Sum sum(out, P::n_components, marks);
             for (const auto &p : pic)
               {
                 const double *prop = p.get_properties().data();
@@ -177,13 +186,24 @@ namespace mpm
             stresses.finish_cell(cell, pic, sum, weights);
             sum.finish(weights, first, last);
             if (over_cell)
-              cell_pressure.add_to_nodes(c.grid.nodes(cell),
-                                         out,
-                                         P::n_components,
-                                         P::force);
+              {
+                cell_pressure.add_to_nodes(c.grid.nodes(cell),
+                                           out,
+                                           P::n_components,
+                                           P::force);
+                if (marks)
+                  for (unsigned int v = 0; v < BackgroundGrid<dim>::n_vertices;
+                       ++v)
+                    marks[c.grid.nodes(cell)[v]] = 1;
+              }
           });
         weights.end_pass(error.empty());
         c.nodal.compress(VectorOperation::add);
+        if (c.active)
+          {
+            c.active->collect();
+            c.active->record(c.nodal);
+          }
         return error;
       }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <mpm/grid/active_nodes.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/grid/nodal_layout.h>
 
@@ -14,7 +15,8 @@ namespace mpm
    * nodal velocity v_i^{n+1} = (mv)_i^{n+1}/m_i and its increment written
    * to @p kinematics (ghosts updated). Nodes lighter than @p min_mass get
    * zero velocity. Returns an empty string, or a description of the first
-   * node with a non-finite value.
+   * node with a non-finite value. With @p active, only its nodes() (the
+   * rest of @p kinematics is zero).
    */
   template <int dim>
   std::string
@@ -23,13 +25,16 @@ namespace mpm
               const double               dt,
               const double               damping,
               const double               min_mass,
-              NodalVector               &kinematics);
+              NodalVector               &kinematics,
+              ActiveNodes               *active = nullptr);
 
   /**
    * Nodal velocity v_i = (mv)_i / m_i (constrained) from a mass vector
    * (P2G layout) and a momentum vector with dim components per node
    * (@p momentum_offset = 0) or the P2G vector itself (offset 1).
    * Written into the velocity slots of @p kinematics, ghosts updated.
+   * With @p active, only at its nodes() (the rest of @p kinematics is
+   * zero).
    */
   template <int dim>
   std::string
@@ -39,5 +44,6 @@ namespace mpm
                  const unsigned int         momentum_components,
                  const unsigned int         momentum_offset,
                  const double               min_mass,
-                 NodalVector               &kinematics);
+                 NodalVector               &kinematics,
+                 ActiveNodes               *active = nullptr);
 } // namespace mpm

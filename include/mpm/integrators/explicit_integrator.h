@@ -93,6 +93,12 @@ namespace mpm
     NodalVector &
     remap(const unsigned int f);
 
+    /// The nodes the node passes are limited to: null (every node) with
+    /// contact, whose fields the contact law combines over the whole
+    /// grid, and with a remedy that adds forces after the P2G pass.
+    ActiveNodes *
+    active_nodes();
+
     /// Where the transfers find the particles, grid and family weights,
     /// for the particles of field @p f.
     transfer::TransferContext<dim>

@@ -6,6 +6,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm/contact/multi_field_contact.h>
+#include <mpm/grid/active_nodes.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/grid/load_balancer.h>
 #include <mpm/parameters/parameters.h>
@@ -97,6 +98,9 @@ namespace mpm
     /// value lives from one step to the next: the particles carry the
     /// whole state.
     NodalVector p2g, kinematics, remap, volume_sums;
+    /// The nodes the particles reach in the step, which the explicit
+    /// step's node passes over p2g, kinematics and remap are limited to.
+    ActiveNodes active_nodes;
     /// Nodes lighter than this carry no velocity.
     double min_nodal_mass = 0;
 

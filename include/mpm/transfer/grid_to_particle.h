@@ -2,6 +2,7 @@
 
 #include <deal.II/particles/particle_handler.h>
 
+#include <mpm/grid/active_nodes.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/grid/nodal_layout.h>
 #include <mpm/particles/particle_layout.h>
@@ -64,6 +65,9 @@ namespace mpm
       /// MUSL: the vector (dim components per node) that receives the
       /// particles' new momenta; null: no re-map in this pass.
       NodalVector *remap;
+      /// Non-null: zero @p remap only where it may be non-zero (the pass
+      /// adds at the nodes of the last P2G pass); null: zero it whole.
+      ActiveNodes *active = nullptr;
     };
 
     /**

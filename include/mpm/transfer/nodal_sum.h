@@ -11,15 +11,19 @@ namespace mpm
     /**
      * Per-cell summation (standard MPM): the particles of a cell add into
      * a buffer over its nodes (stencil entry k is vertex k), and the
-     * buffer goes to the nodal vector once, at the end of the cell.
+     * buffer goes to the nodal vector once, at the end of the cell. A
+     * non-null @p marks (ActiveNodes) gets the nodes added to.
      */
     template <unsigned int n_nodes, unsigned int n_values>
     class CellSum
     {
     public:
-      CellSum(double *nodal, const unsigned int stride)
+      CellSum(double              *nodal,
+              const unsigned int   stride,
+              unsigned char *const marks = nullptr)
         : nodal(nodal)
         , stride(stride)
+        , marks(marks)
       {}
 
       /// Where entry @p k of the stencil adds its values.
@@ -39,6 +43,8 @@ namespace mpm
       {
         for (unsigned int v = 0; v < n_nodes; ++v)
           {
+            if (marks)
+              marks[weights.node(v)] = 1;
             double *node = nodal + weights.node(v) * stride;
             for (unsigned int c = first; c < last; ++c)
               node[c] += local[v][c];
@@ -46,9 +52,10 @@ namespace mpm
       }
 
     private:
-      double *const      nodal;
-      const unsigned int stride;
-      double             local[n_nodes][n_values] = {};
+      double *const        nodal;
+      const unsigned int   stride;
+      unsigned char *const marks;
+      double               local[n_nodes][n_values] = {};
     };
 
     /// Per-entry summation (the particle-domain families): every stencil
@@ -56,16 +63,22 @@ namespace mpm
     class EntrySum
     {
     public:
-      EntrySum(double *nodal, const unsigned int stride)
+      EntrySum(double              *nodal,
+               const unsigned int   stride,
+               unsigned char *const marks = nullptr)
         : nodal(nodal)
         , stride(stride)
+        , marks(marks)
       {}
 
       template <typename Weights>
       double *
       slot(const Weights &weights, const unsigned int k)
       {
-        return nodal + weights.node(k) * stride;
+        const unsigned int node = weights.node(k);
+        if (marks)
+          marks[node] = 1;
+        return nodal + node * stride;
       }
 
       template <typename Weights>
@@ -74,8 +87,9 @@ namespace mpm
       {}
 
     private:
-      double *const      nodal;
-      const unsigned int stride;
+      double *const        nodal;
+      const unsigned int   stride;
+      unsigned char *const marks;
     };
 
     /// The summation of a cell's contributions that the family @p Family

@@ -2,6 +2,7 @@
 
 #include <deal.II/particles/particle_handler.h>
 
+#include <mpm/grid/active_nodes.h>
 #include <mpm/grid/background_grid.h>
 #include <mpm/grid/nodal_layout.h>
 #include <mpm/particles/body.h>
@@ -58,6 +59,9 @@ namespace mpm
       P2GContent                   content;
       /// The ghosted P2G vector (P2GLayout), compressed at the end.
       NodalVector &nodal;
+      /// Non-null: zero @p nodal only where it may be non-zero, and mark
+      /// the nodes added to; null: zero it whole.
+      ActiveNodes *active = nullptr;
     };
 
     /**
