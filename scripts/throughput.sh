@@ -13,7 +13,8 @@
 #            one rank); corner-balanced: the same balanced at set-up and
 #            every 50 steps; unbalanced: standard without the set-up
 #            balance; wide: standard in a grid of four times the area,
-#            [-1, 2]^2, around the same block. All but corner and
+#            [-1, 2]^2, around the same block; neo-Hookean, von-Mises:
+#            standard with those materials. All but corner and
 #            unbalanced are balanced at set-up (Load balancing/Balance at
 #            set-up, on by default).
 #   ranks:   the rank counts to run, e.g. "1" or "1 2" (default)

@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dim=$1 cells=$2 variant=$3
-family=standard remedy="" lower=-0.25 upper=1.25 grid=$((cells * 3 / 2)) interval=0
+family=standard remedy="" material="" lower=-0.25 upper=1.25 grid=$((cells * 3 / 2)) interval=0
 at_setup=true
 case "$variant" in
   standard) ;;
@@ -18,6 +18,17 @@ case "$variant" in
   filter) remedy="set Stress filter = assumed stress" ;;
   theta-bar) remedy="set Volumetric smoothing = cell" ;;
   uGIMP|cpGIMP|CPDI|CPDI2) family=$variant ;;
+  neo-Hookean) material="set Model = neo-Hookean
+      subsection Neo-Hookean
+        set Young's modulus = 1e6
+        set Poisson's ratio = 0.3
+      end" ;;
+  von-Mises) material="set Model = von Mises plasticity
+      subsection Von Mises plasticity
+        set Young's modulus = 1e6
+        set Poisson's ratio = 0.3
+        set Yield stress = 2e2
+      end" ;;
   *) echo "unknown variant '$variant'" >&2; exit 1 ;;
 esac
 corner=$upper low=$lower
@@ -41,6 +52,9 @@ subsection Bodies
     set Subdivisions = $cells
     subsection Locking remedies
       $remedy
+    end
+    subsection Material
+      $material
     end
   end
 end

@@ -337,6 +337,32 @@ BOOST_AUTO_TEST_CASE(neo_hookean_frame_indifference)
   BOOST_TEST(relative_difference(stress, model.cauchy_stress(Q * F)) < 1e-15);
 }
 
+// The wave speed of a plane-strain F (b_xz = b_yz = 0: the largest
+// eigenvalue of b in closed form) equals that of the same F turned about a
+// general axis (deal.II's 3x3 eigenvalues), whether the largest
+// eigenvalue is in-plane or b_zz.
+BOOST_AUTO_TEST_CASE(neo_hookean_plane_strain_wave_speed)
+{
+  const auto   model = make_model<NeoHookean>(steel);
+  Tensor<1, 3> axis;
+  axis[0] = 0.3;
+  axis[1] = -1;
+  axis[2] = 0.5;
+  axis /= axis.norm();
+  const Tensor<2, 3> Q = rotation(axis, 0.7);
+  for (const double F_zz : {1.0, 1.6})
+    {
+      Tensor<2, 3> F;
+      F[0][0] = 1.2;
+      F[0][1] = 0.3;
+      F[1][0] = -0.1;
+      F[1][1] = 0.9;
+      F[2][2] = F_zz;
+      BOOST_TEST(relative_difference(model.wave_speed(F),
+                                     model.wave_speed(Q * F)) < 1e-13);
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 
