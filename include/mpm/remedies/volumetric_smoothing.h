@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/tensor.h>
+#include <deal.II/particles/particle_iterator.h>
 
 #include <mpm/particles/body.h>
 #include <mpm/particles/particle_layout.h>
@@ -39,7 +40,14 @@ namespace mpm
                          const double            J_bar,
                          const double            theta_bar)
     {
-      F *= std::pow(J_bar / J, 1. / dim);
+      // the d-th root without pow (which costs about 120 instructions)
+      const double ratio = J_bar / J;
+      if constexpr (dim == 1)
+        F *= ratio;
+      else if constexpr (dim == 2)
+        F *= std::sqrt(ratio);
+      else
+        F *= std::cbrt(ratio);
       const double l = (theta_bar - dealii::trace(L)) / dim;
       for (unsigned int d = 0; d < dim; ++d)
         L[d][d] += l;
@@ -190,14 +198,15 @@ namespace mpm
         double V0 = 0, V = 0, V_old = 0, V_old_trL = 0;
       };
       std::vector<CellSums> cell_sums;
-      /// Kinematics of the cell's cell-smoothed particles, kept while the
-      /// cell's averages are summed.
+      /// The cell's cell-smoothed particles and their kinematics, kept
+      /// while the cell's averages are summed, so that the second pass
+      /// walks this list, not the cell's particles again.
       struct Buffered
       {
-        dealii::Tensor<2, dim> grad_v, F;
-        /// false: not updated in this pass (another contact field's, a
-        /// rigid body's or a bad domain's particle)
-        bool updated;
+        dealii::Particles::ParticleIterator<dim> particle;
+        double                                  *prop;
+        dealii::Tensor<2, dim>                   grad_v, F;
+        double                                   J;
       };
       std::vector<Buffered> buffer;
     };
@@ -222,24 +231,21 @@ namespace mpm
       if (any_cell)
         std::fill(cell_sums.begin(), cell_sums.end(), CellSums());
       unsigned int ordinal = 0;
-      for (auto &p : pic)
+      for (auto p = pic.begin(); p != pic.end(); ++p)
         {
-          double                *prop = p.get_properties().data();
+          double                *prop = p->get_properties().data();
           dealii::Tensor<2, dim> grad_v, F;
-          if (!kinematics(p, ordinal++, prop, grad_v, F))
-            {
-              // keep the cell average's bookkeeping in step
-              if (averages[body_of(prop)] == VolumeAverage::cell)
-                buffer.push_back({{}, {}, false});
-              continue;
-            }
+          // a particle not updated in this pass: another contact field's,
+          // a rigid body's or a bad domain's
+          if (!kinematics(*p, ordinal++, prop, grad_v, F))
+            continue;
           store_matrix<dim>(F, prop + L::F);
           const double J          = determinant(F);
           const double V_old      = prop[L::volume];
           prop[L::volume]         = J * prop[L::volume0];
           const VolumeAverage how = averages[body_of(prop)];
           if (how == VolumeAverage::none)
-            update(p, prop, grad_v, F);
+            update(*p, prop, grad_v, F);
           else if (how == VolumeAverage::node)
             {
               // J and tr L interpolated from the nodal mass averages
@@ -259,7 +265,7 @@ namespace mpm
                   smooth_volume_change<dim>(grad_v, F, J, mJ / m, mtr / m);
                   keep_smoothed_volume(prop, F);
                 }
-              update(p, prop, grad_v, F);
+              update(*p, prop, grad_v, F);
             }
           else
             {
@@ -268,25 +274,15 @@ namespace mpm
               sum.V += prop[L::volume];
               sum.V_old += V_old;
               sum.V_old_trL += V_old * trace(grad_v);
-              buffer.push_back({grad_v, F, true});
+              buffer.push_back({p, prop, grad_v, F, J});
             }
         }
-      if (buffer.empty())
-        return;
       // Cell average: J_bar = sum V / sum V0, theta_bar = sum V tr L /
       // sum V (volumes before the step), per body.
-      unsigned int k = 0;
-      for (auto &p : pic)
+      for (auto &[p, prop, grad_v, F, J] : buffer)
         {
-          double *prop = p.get_properties().data();
-          if (averages[body_of(prop)] != VolumeAverage::cell)
-            continue;
-          auto &[grad_v, F, updated] = buffer[k++];
-          if (!updated)
-            continue;
           const unsigned int b   = body_of(prop);
           const auto        &sum = cell_sums[b];
-          const double       J   = determinant(F);
           if (J > 0)
             {
               if (cell_rate && over_cell[b])
@@ -301,7 +297,7 @@ namespace mpm
                   grad_v, F, J, sum.V / sum.V0, sum.V_old_trL / sum.V_old);
               keep_smoothed_volume(prop, F);
             }
-          update(p, prop, grad_v, F);
+          update(*p, prop, grad_v, F);
         }
     }
   } // namespace remedies
