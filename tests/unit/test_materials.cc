@@ -81,6 +81,17 @@ namespace
     return identity() + std::sin(angle) * K + (1 - std::cos(angle)) * K * K;
   }
 
+  /// The unit vector along (x, y, z): an axis of no symmetry.
+  Tensor<1, 3>
+  unit_axis(const double x, const double y, const double z)
+  {
+    Tensor<1, 3> axis;
+    axis[0] = x;
+    axis[1] = y;
+    axis[2] = z;
+    return axis / axis.norm();
+  }
+
   SymmetricTensor<2, 3>
   rotate(const SymmetricTensor<2, 3> &s, const Tensor<2, 3> &Q)
   {
@@ -201,12 +212,8 @@ BOOST_AUTO_TEST_SUITE(objectivity)
 
 BOOST_AUTO_TEST_CASE(linear_elastic_rigid_spin)
 {
-  Tensor<1, 3> axis;
-  axis[0] = 1;
-  axis[1] = 2;
-  axis[2] = 3;
-  axis /= axis.norm();
-  Tensor<1, 3> z;
+  const Tensor<1, 3> axis = unit_axis(1, 2, 3);
+  Tensor<1, 3>       z;
   z[2] = 1;
 
   const auto model3d = make_model<LinearElastic>(steel);
@@ -231,11 +238,7 @@ BOOST_AUTO_TEST_CASE(plasticity_rigid_spin)
   p["Hardening modulus"] = "1e9";
   const auto model       = make_model<VonMisesPlasticity>(p);
 
-  Tensor<1, 3> axis;
-  axis[0] = -0.5;
-  axis[1] = 1;
-  axis[2] = 2;
-  axis /= axis.norm();
+  const Tensor<1, 3> axis = unit_axis(-0.5, 1, 2);
 
   // Inside the elastic domain.
   check_rigid_spin(model, general_stress(1e8), axis, {0.0});
@@ -263,11 +266,7 @@ BOOST_AUTO_TEST_CASE(midpoint_increment_of_a_finite_rotation_step)
   // (h = R - I, as positions move on the grid): with the midpoint gradient
   // the stress turns by exactly R and is not strained; the start-of-step
   // gradient strains it by about theta^2 / 2 of the elastic modulus.
-  Tensor<1, 3> axis;
-  axis[0] = 0.3;
-  axis[1] = -1;
-  axis[2] = 2;
-  axis /= axis.norm();
+  const Tensor<1, 3> axis  = unit_axis(0.3, -1, 2);
   const double       theta = 0.4;
   const Tensor<2, 3> R     = rotation(axis, theta);
   PointKinematics    point;
@@ -307,21 +306,16 @@ BOOST_AUTO_TEST_CASE(neo_hookean_frame_indifference)
 {
   const auto   model = make_model<NeoHookean>(steel);
   Tensor<2, 3> F;
-  F[0][0] = 1.2;
-  F[0][1] = 0.3;
-  F[0][2] = -0.1;
-  F[1][0] = 0.05;
-  F[1][1] = 0.9;
-  F[1][2] = 0.2;
-  F[2][0] = 0.1;
-  F[2][1] = -0.15;
-  F[2][2] = 1.1;
-  Tensor<1, 3> axis;
-  axis[0] = 0.3;
-  axis[1] = -1;
-  axis[2] = 0.5;
-  axis /= axis.norm();
-  const Tensor<2, 3> Q = rotation(axis, 1.234);
+  F[0][0]              = 1.2;
+  F[0][1]              = 0.3;
+  F[0][2]              = -0.1;
+  F[1][0]              = 0.05;
+  F[1][1]              = 0.9;
+  F[1][2]              = 0.2;
+  F[2][0]              = 0.1;
+  F[2][1]              = -0.15;
+  F[2][2]              = 1.1;
+  const Tensor<2, 3> Q = rotation(unit_axis(0.3, -1, 0.5), 1.234);
 
   BOOST_TEST(relative_difference(model.cauchy_stress(Q * F),
                                  rotate(model.cauchy_stress(F), Q)) < 1e-12);
@@ -343,13 +337,8 @@ BOOST_AUTO_TEST_CASE(neo_hookean_frame_indifference)
 // eigenvalue is in-plane or b_zz.
 BOOST_AUTO_TEST_CASE(neo_hookean_plane_strain_wave_speed)
 {
-  const auto   model = make_model<NeoHookean>(steel);
-  Tensor<1, 3> axis;
-  axis[0] = 0.3;
-  axis[1] = -1;
-  axis[2] = 0.5;
-  axis /= axis.norm();
-  const Tensor<2, 3> Q = rotation(axis, 0.7);
+  const auto         model = make_model<NeoHookean>(steel);
+  const Tensor<2, 3> Q     = rotation(unit_axis(0.3, -1, 0.5), 0.7);
   for (const double F_zz : {1.0, 1.6})
     {
       Tensor<2, 3> F;
