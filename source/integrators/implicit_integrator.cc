@@ -96,8 +96,15 @@ namespace mpm
           "Boundary conditions/Moving boundary velocity");
       }
     linear_solver = p.implicit.linear_solver;
+    // automatic: the Krylov method here, the direct solver per solve when
+    // the system is small enough (solve_equilibrium())
     if (linear_solver == LinearSolver::automatic)
-      linear_solver = symmetric ? LinearSolver::cg : LinearSolver::gmres;
+      {
+        linear_solver = symmetric ? LinearSolver::cg : LinearSolver::gmres;
+        if (p.implicit.preconditioner ==
+            Parameters::ImplicitSolver::Preconditioner::amg)
+          direct_limit = p.implicit.direct_limit[dim - 1];
+      }
     if (linear_solver == LinearSolver::cg && !symmetric)
       throw InputError(
         "Implicit solver/Linear solver = CG needs a symmetric tangent, but "
@@ -607,7 +614,12 @@ namespace mpm
     const auto solve = [&]() {
       TimerOutput::Scope timer(state.timer, "implicit linear solve");
       const auto         solved =
-        system.solve(state.background, p, linear_solver, delta);
+        system.solve(state.background,
+                     p,
+                     direct_limit > 0 && system.n_unknowns() <= direct_limit ?
+                       Parameters::ImplicitSolver::LinearSolver::direct :
+                       linear_solver,
+                     delta);
       result.linear_iterations += solved.iterations;
       result.error = solved.error;
       return solved.error.empty();

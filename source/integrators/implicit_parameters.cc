@@ -1,5 +1,9 @@
+#include <deal.II/base/utilities.h>
+
 #include <mpm/integrators/implicit_parameters.h>
 #include <mpm/utilities/input_error.h>
+
+#include <string>
 
 namespace mpm
 {
@@ -8,6 +12,7 @@ namespace mpm
     using dealii::Patterns::Bool;
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
+    using dealii::Patterns::List;
     using dealii::Patterns::Selection;
 
     void
@@ -55,18 +60,38 @@ namespace mpm
                         "once Newton converges in at most 4 iterations. When "
                         "the last cut fails, the run stops (status 2) with "
                         "the residual history in the message.");
-      prm.declare_entry("Linear solver",
-                        "automatic",
-                        Selection("automatic|CG|GMRES|direct"),
-                        "CG or GMRES(100) preconditioned by ML algebraic "
-                        "multigrid with the rigid-body modes as near-null "
-                        "space, or a direct solver (Amesos KLU, small "
-                        "problems). automatic: CG if the tangent is "
-                        "symmetric (every material hyperelastic, no "
-                        "volumetric smoothing and no stress filter), else "
-                        "GMRES; linear elastic's tangent is not symmetric "
-                        "(Hughes-Winget rotation). CG with a non-symmetric "
-                        "tangent is refused.");
+      prm.declare_entry(
+        "Linear solver",
+        "automatic",
+        Selection("automatic|CG|GMRES|direct"),
+        "CG or GMRES(100) preconditioned by ML algebraic multigrid with the "
+        "rigid-body modes as near-null space, or the Direct solver. "
+        "automatic: the direct solver for a solve of at most Automatic "
+        "direct limit unknowns, else CG if the tangent is symmetric (every "
+        "material hyperelastic, no volumetric smoothing and no stress "
+        "filter) and GMRES if not; linear elastic's tangent is not "
+        "symmetric (Hughes-Winget rotation). CG with a non-symmetric "
+        "tangent is refused.");
+      prm.declare_entry(
+        "Direct solver",
+        "MUMPS",
+        Selection("MUMPS|KLU"),
+        "The sparse direct solver (through Trilinos Amesos) of Linear "
+        "solver = direct and of automatic's small solves. MUMPS: "
+        "multifrontal, the factorisation distributed over the ranks. KLU: "
+        "serial, the matrix gathered on one rank; slower on grid "
+        "matrices (doc/guide/implicit.md).");
+      prm.declare_entry(
+        "Automatic direct limit",
+        "100000000, 500000, 20000",
+        List(Integer(0), 3, 3),
+        "Linear solver = automatic: the largest number of unknowns (over "
+        "all ranks) a solve may have to go to the Direct solver, in 1D, "
+        "2D and 3D; larger solves take AMG with CG or GMRES, and so does "
+        "every solve with 0. With Preconditioner = AMG with cell pressure "
+        "automatic is always iterative. The defaults are where MUMPS stops "
+        "paying on the measured cases (doc/guide/implicit.md, Linear "
+        "solver and preconditioner).");
       prm.declare_entry(
         "Preconditioner",
         "AMG",
@@ -163,15 +188,23 @@ namespace mpm
       residual_tolerance = prm.get_double("Residual tolerance");
       absolute_residual_tolerance =
         prm.get_double("Absolute residual tolerance");
-      energy_tolerance      = prm.get_double("Energy tolerance");
-      max_iterations        = prm.get_integer("Maximum Newton iterations");
-      line_search           = prm.get_bool("Line search");
-      max_step_cuts         = prm.get_integer("Maximum step cuts");
-      const std::string s   = prm.get("Linear solver");
-      linear_solver         = s == "CG"     ? LinearSolver::cg :
-                              s == "GMRES"  ? LinearSolver::gmres :
-                              s == "direct" ? LinearSolver::direct :
-                                              LinearSolver::automatic;
+      energy_tolerance    = prm.get_double("Energy tolerance");
+      max_iterations      = prm.get_integer("Maximum Newton iterations");
+      line_search         = prm.get_bool("Line search");
+      max_step_cuts       = prm.get_integer("Maximum step cuts");
+      const std::string s = prm.get("Linear solver");
+      linear_solver       = s == "CG"     ? LinearSolver::cg :
+                            s == "GMRES"  ? LinearSolver::gmres :
+                            s == "direct" ? LinearSolver::direct :
+                                            LinearSolver::automatic;
+      direct_solver = prm.get("Direct solver") == "KLU" ? DirectSolver::klu :
+                                                          DirectSolver::mumps;
+      {
+        const auto limits = dealii::Utilities::split_string_list(
+          prm.get("Automatic direct limit"));
+        for (unsigned int d = 0; d < 3; ++d)
+          direct_limit[d] = std::stoul(limits[d]);
+      }
       preconditioner        = prm.get("Preconditioner") == "AMG" ?
                                 Preconditioner::amg :
                                 Preconditioner::amg_cell_pressure;

@@ -13,7 +13,10 @@
 #include <mpm/utilities/elasticity_amg.h>
 
 DEAL_II_DISABLE_EXTRA_DIAGNOSTICS
+#include <Amesos.h>
+#include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
 DEAL_II_ENABLE_EXTRA_DIAGNOSTICS
 
 #include <algorithm>
@@ -534,6 +537,40 @@ namespace mpm
   }
 
   template <int dim>
+  void
+  NodalLinearSystem<dim>::solve_direct(
+    const Parameters::ImplicitSolver::DirectSolver package,
+    TrilinosWrappers::MPI::Vector                 &x)
+  {
+    const bool klu = package == Parameters::ImplicitSolver::DirectSolver::klu;
+    Epetra_LinearProblem problem(const_cast<Epetra_CrsMatrix *>(
+                                   &matrix.trilinos_matrix()),
+                                 &x.trilinos_vector(),
+                                 &rhs.trilinos_vector());
+    Amesos               factory;
+    const std::unique_ptr<Amesos_BaseSolver> direct(
+      factory.Create(klu ? "Amesos_Klu" : "Amesos_Mumps", problem));
+    AssertThrow(direct,
+                ExcMessage("Trilinos Amesos has no solver " +
+                           std::string(klu ? "KLU" : "MUMPS")));
+    // MUMPS on one process: with several, its dynamic scheduling makes the
+    // round-off depend on timing, and a run would not repeat itself (nor
+    // resume from a checkpoint bit for bit)
+    Teuchos::ParameterList parameters;
+    parameters.set("MaxProcs", 1);
+    direct->SetParameters(parameters);
+    const auto check = [](const int status, const char *phase) {
+      AssertThrow(status == 0,
+                  ExcMessage(std::string("the direct solver's ") + phase +
+                             " failed (Amesos status " +
+                             std::to_string(status) + ")"));
+    };
+    check(direct->SymbolicFactorization(), "symbolic factorization");
+    check(direct->NumericFactorization(), "factorization");
+    check(direct->Solve(), "solve");
+  }
+
+  template <int dim>
   typename NodalLinearSystem<dim>::SolveResult
   NodalLinearSystem<dim>::solve(
     const BackgroundGrid<dim>                     &grid,
@@ -548,12 +585,7 @@ namespace mpm
       {
         if (solver == LinearSolver::direct)
           {
-            SolverControl                  control;
-            TrilinosWrappers::SolverDirect direct(
-              control,
-              TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                             "Amesos_Klu"));
-            direct.solve(matrix, x, rhs);
+            solve_direct(p.direct_solver, x);
             result.iterations = 1;
           }
         else

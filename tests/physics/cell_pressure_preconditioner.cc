@@ -16,6 +16,7 @@
 // - a rigid platen pressing a block (nu = 0.49) between slip walls: the
 //   predictor's inhomogeneous constraints, and the platen's reaction.
 #include "../tests.h"
+#include "implicit_run.h"
 #include "platen_block.h"
 #include "rotated_column.h"
 
@@ -28,6 +29,7 @@ namespace
   {
     return R"(
 subsection Implicit solver
+  set Linear solver = GMRES
   set Preconditioner = )" +
            preconditioner + R"(
   set Linear tolerance = 1e-10
@@ -110,31 +112,8 @@ end
 )");
   }
 
-  struct Result
-  {
-    double energy, newton, linear, reaction = 0;
-  };
-
-  Result
-  run(const std::string &text,
-      const unsigned int n_bodies,
-      const double       dt,
-      const unsigned int steps)
-  {
-    mpm_test::Case<2> c(text, n_bodies);
-    auto             &sim = *c.simulator;
-    Result            r{0, 0, 0};
-    for (unsigned int step = 0; step < steps; ++step)
-      {
-        sim.do_time_step(dt);
-        r.newton += mpm_test::integrator_value(sim, "newton_iterations");
-        r.linear += mpm_test::integrator_value(sim, "linear_iterations");
-      }
-    r.energy = sim.statistics().strain_energy;
-    if (n_bodies == 2)
-      r.reaction = mpm_test::integrator_value(sim, "reaction_y");
-    return r;
-  }
+  using implicit_run::Result;
+  using implicit_run::run;
 
   void
   compare(const std::string &name,

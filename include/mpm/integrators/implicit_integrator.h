@@ -233,7 +233,11 @@ namespace mpm
     /// Newmark: assemble() adds the inertia (not for a_n itself)
     bool                                     with_inertia = false;
     Parameters::ImplicitSolver::LinearSolver linear_solver;
-    NodalLinearSystem<dim>                   system;
+    /// Linear solver = automatic: solves of at most this many unknowns go
+    /// to the direct solver (0 with a split preconditioner or another
+    /// choice: none)
+    dealii::types::global_dof_index direct_limit = 0;
+    NodalLinearSystem<dim>          system;
     /// The partition the system was built for.
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partition;
     NodalVector increment; ///< u, dim components per node

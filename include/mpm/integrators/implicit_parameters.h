@@ -16,24 +16,35 @@ namespace mpm
     {
       enum class LinearSolver
       {
-        automatic, ///< CG if every material's tangent is symmetric, else GMRES
+        automatic, ///< direct up to direct_limit unknowns, else CG or GMRES
         cg,
         gmres,
         direct
+      };
+      /// The package behind LinearSolver::direct.
+      enum class DirectSolver
+      {
+        mumps, ///< multifrontal, distributed over the ranks
+        klu    ///< serial (the matrix gathered on one rank)
       };
       enum class Preconditioner
       {
         amg,              ///< ML AMG on the tangent
         amg_cell_pressure ///< AMG without the cells' stiff volumetric part
       };
-      double         residual_tolerance          = 1e-8;
-      double         absolute_residual_tolerance = 1e-12;
-      double         energy_tolerance            = 1e-12;
-      unsigned int   max_iterations              = 20;
-      bool           line_search                 = true;
-      unsigned int   max_step_cuts               = 6;
-      LinearSolver   linear_solver               = LinearSolver::automatic;
-      Preconditioner preconditioner              = Preconditioner::amg;
+      double       residual_tolerance          = 1e-8;
+      double       absolute_residual_tolerance = 1e-12;
+      double       energy_tolerance            = 1e-12;
+      unsigned int max_iterations              = 20;
+      bool         line_search                 = true;
+      unsigned int max_step_cuts               = 6;
+      LinearSolver linear_solver               = LinearSolver::automatic;
+      DirectSolver direct_solver               = DirectSolver::mumps;
+      /// Linear solver = automatic: the largest number of unknowns (over
+      /// all ranks) of a solve that goes to the direct solver, per
+      /// dimension 1, 2, 3
+      unsigned long  direct_limit[3] = {0, 0, 0};
+      Preconditioner preconditioner  = Preconditioner::amg;
       /// AMG with cell pressure: the volumetric stiffness left in the AMG
       /// part, in units of mu
       double       cell_pressure_gamma   = 10;

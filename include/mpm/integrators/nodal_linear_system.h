@@ -213,10 +213,10 @@ namespace mpm
       std::string  error; ///< empty: solved
     };
 
-    /// Solve K x = rhs with the method of @p p (CG, GMRES, or direct when
-    /// @p solver asks so); x satisfies the constraints. The near-null
-    /// space of the AMG preconditioner is the rigid-body motion of the
-    /// nodes at @p grid's node positions. With cell pressures split off,
+    /// Solve K x = rhs with the method of @p p (CG, GMRES, or p's
+    /// Direct solver when @p solver asks so); x satisfies the constraints. The
+    /// near-null space of the AMG preconditioner is the rigid-body motion of
+    /// the nodes at @p grid's node positions. With cell pressures split off,
     /// GMRES solves the displacement-pressure system instead
     /// (solve_with_cell_pressure()).
     SolveResult
@@ -224,6 +224,13 @@ namespace mpm
           const Parameters::ImplicitSolver              &p,
           const Parameters::ImplicitSolver::LinearSolver solver,
           dealii::TrilinosWrappers::MPI::Vector         &x);
+
+    /// The unknowns of the system, over all ranks.
+    Index
+    n_unknowns() const
+    {
+      return owned.size();
+    }
 
     /// A vector of the owned unknowns.
     void
@@ -263,14 +270,20 @@ namespace mpm
       const Parameters::ImplicitSolver                &p,
       dealii::TrilinosWrappers::MPI::Vector           &x);
 
-    MPI_Comm                               comm = MPI_COMM_SELF;
-    NodeGroups                             grid_groups;
-    std::vector<Index>                     node_to_global; ///< per local node
-    dealii::IndexSet                       owned, relevant;
-    dealii::AffineConstraints<double>      node_constraints;
-    dealii::AffineConstraints<double>      prescribed_motion;
-    bool                                   predictor        = false;
-    bool                                   moves_prescribed = false;
+    MPI_Comm                          comm = MPI_COMM_SELF;
+    NodeGroups                        grid_groups;
+    std::vector<Index>                node_to_global; ///< per local node
+    dealii::IndexSet                  owned, relevant;
+    dealii::AffineConstraints<double> node_constraints;
+    dealii::AffineConstraints<double> prescribed_motion;
+    bool                              predictor        = false;
+    bool                              moves_prescribed = false;
+    /// x = K^-1 rhs by the sparse direct solver @p package, the
+    /// factorisation on one process.
+    void
+    solve_direct(const Parameters::ImplicitSolver::DirectSolver package,
+                 dealii::TrilinosWrappers::MPI::Vector         &x);
+
     dealii::TrilinosWrappers::SparseMatrix matrix;
     dealii::TrilinosWrappers::MPI::Vector  rhs;
     double diagonal_scale = 1; ///< of the constrained rows' diagonal
