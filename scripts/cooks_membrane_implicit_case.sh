@@ -9,7 +9,9 @@
 # SMOOTHING=cell theta-bar; SUPPORT=x Implicit solver/Minimum nodal
 # support; PRECONDITIONER="AMG with cell pressure" Implicit
 # solver/Preconditioner, GAMMA its Cell pressure gamma; GHOST=beta
-# Implicit solver/Ghost penalty.
+# Implicit solver/Ghost penalty; SOLVER Implicit solver/Linear solver
+# (default GMRES: the AMG figures of the pages, which automatic would
+# replace by direct solves at these sizes) and DIRECT its Direct solver.
 # Usage: scripts/cooks_membrane_implicit_case.sh H OUTDIR > case.prm
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -39,6 +41,8 @@ subsection Shape functions
   set Family = ${FAMILY:-standard}
 end
 subsection Implicit solver
+  set Linear solver = ${SOLVER:-GMRES}
+  set Direct solver = ${DIRECT:-MUMPS}
   set Minimum nodal support = ${SUPPORT:-1e-4}
   set Preconditioner = ${PRECONDITIONER:-AMG}
   set Cell pressure gamma = ${GAMMA:-10}

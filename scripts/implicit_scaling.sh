@@ -22,9 +22,10 @@
 #           4 to 16 cells per direction, by AMG and by AMG with cell
 #           pressure
 # GAMMA sets Implicit solver/Cell pressure gamma of the split cases.
-# SOLVER sets Implicit solver/Linear solver (default: the parameter
-# file's, automatic) and DIRECT its Direct solver (MUMPS or KLU); the
-# "linear per solve" column is 1 for a direct solve.
+# SOLVER sets Implicit solver/Linear solver (default GMRES: the AMG
+# figures, which automatic would replace by direct solves at most of these
+# sizes) and DIRECT its Direct solver (MUMPS or KLU); the "linear per
+# solve" column is 1 for a direct solve.
 # Usage: [CASES="cook-a cook-b block3d"] [RANKS="1 2"] scripts/implicit_scaling.sh
 # (the default cases; the others by name)
 # About 5 minutes for everything on 2 cores. Run it on an otherwise idle
@@ -114,12 +115,8 @@ for c in $cases; do
         block3d-theta) block3d "$s" 0.4999 cell ;;
         block3d-split) block3d "$s" 0.4999 cell "AMG with cell pressure" ;;
       esac > "$work/case.prm"
-      if [ -n "${SOLVER:-}${DIRECT:-}" ]; then
-        printf 'subsection Implicit solver\n' >> "$work/case.prm"
-        [ -n "${SOLVER:-}" ] && printf '  set Linear solver = %s\n' "$SOLVER" >> "$work/case.prm"
-        [ -n "${DIRECT:-}" ] && printf '  set Direct solver = %s\n' "$DIRECT" >> "$work/case.prm"
-        printf 'end\n' >> "$work/case.prm"
-      fi
+      printf 'subsection Implicit solver\n  set Linear solver = %s\n  set Direct solver = %s\nend\n' \
+        "${SOLVER:-GMRES}" "${DIRECT:-MUMPS}" >> "$work/case.prm"
       rm -rf "$work/out"
       (cd "$work" && mpirun -np "$ranks" "$mpm" case.prm > log) \
         || { tail -5 "$work/log"; exit 1; }

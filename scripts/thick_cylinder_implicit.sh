@@ -9,7 +9,9 @@
 # iterations and the wall time of each run. VARIANTS="standard theta-bar
 # node theta-bar-split" adds theta-bar preconditioned by Implicit
 # solver/Preconditioner = AMG with cell pressure (the same displacements,
-# fewer GMRES iterations).
+# fewer GMRES iterations). SOLVER sets Implicit solver/Linear solver
+# (default GMRES: the iteration counts of the page; automatic would solve
+# these sizes directly).
 # Usage: scripts/thick_cylinder_implicit.sh [h values...]   (RANKS=n, MPM=..., VARIANTS=...)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -45,6 +47,7 @@ subsection Output
   set Write csv = false
 end
 subsection Implicit solver
+  set Linear solver = ${SOLVER:-GMRES}
   set Preconditioner = $preconditioner
 end
 subsection Bodies
