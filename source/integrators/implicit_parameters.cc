@@ -77,10 +77,10 @@ namespace mpm
         "MUMPS",
         Selection("MUMPS|KLU"),
         "The sparse direct solver (through Trilinos Amesos) of Linear "
-        "solver = direct and of automatic's small solves. MUMPS: "
-        "multifrontal, the factorisation distributed over the ranks. KLU: "
-        "serial, the matrix gathered on one rank; slower on grid "
-        "matrices (doc/guide/implicit.md).");
+        "solver = direct and of automatic's small solves. Either factorises "
+        "on one process, the matrix gathered there, so that a run repeats "
+        "itself bit for bit on any number of ranks. MUMPS: multifrontal. "
+        "KLU: slower on grid matrices (doc/guide/implicit.md).");
       prm.declare_entry(
         "Automatic direct limit",
         "100000000, 500000, 20000",

@@ -125,20 +125,7 @@ end
     std::cerr << name << ": energy " << a.energy << " / " << s.energy
               << ", Newton " << a.newton << " / " << s.newton << ", GMRES "
               << a.linear << " / " << s.linear << std::endl;
-    const double de = (s.energy - a.energy) / a.energy;
-    mpm_test::report(std::abs(de) <= 1e-8,
-                     name + ": the same strain energy to 1e-8",
-                     de);
-    if (a.reaction != 0)
-      {
-        const double dr = (s.reaction - a.reaction) / a.reaction;
-        mpm_test::report(std::abs(dr) <= 1e-8,
-                         name + ": the same platen reaction to 1e-8",
-                         dr);
-      }
-    mpm_test::report(a.newton == s.newton,
-                     name + ": the same Newton iterations",
-                     s.newton);
+    implicit_run::same_solution(name, a, s);
     if (fewer > 0)
       mpm_test::report(s.linear * fewer <= a.linear,
                        name + ": at least " + std::to_string(int(fewer)) +

@@ -99,25 +99,7 @@ end
 
   using implicit_run::Result;
   using implicit_run::run;
-
-  void
-  same_solution(const std::string &name, const Result &a, const Result &b)
-  {
-    const double de = (b.energy - a.energy) / a.energy;
-    mpm_test::report(std::abs(de) <= 1e-8,
-                     name + ": the same strain energy to 1e-8",
-                     de);
-    if (a.reaction != 0)
-      {
-        const double dr = (b.reaction - a.reaction) / a.reaction;
-        mpm_test::report(std::abs(dr) <= 1e-8,
-                         name + ": the same platen reaction to 1e-8",
-                         dr);
-      }
-    mpm_test::report(a.newton == b.newton,
-                     name + ": the same Newton iterations",
-                     b.newton);
-  }
+  using implicit_run::same_solution;
 
   template <typename Run>
   void

@@ -1,8 +1,10 @@
-// A few quasi-static steps of a case and what the implicit step reports:
-// for cell_pressure_preconditioner and direct_solver, which solve the same
+// A few quasi-static steps of a case and what the implicit step reports,
+// and the check that two runs reached the same solution: for
+// cell_pressure_preconditioner and direct_solver, which solve the same
 // case with different linear solvers and compare.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "../tests.h"
@@ -36,5 +38,26 @@ namespace implicit_run
     if (n_bodies == 2)
       r.reaction = mpm_test::integrator_value(sim, "reaction_y");
     return r;
+  }
+
+  /// Report whether @p b reached the solution of @p a: the strain energy
+  /// and (with a platen) its reaction to 1e-8, the same Newton iterations.
+  inline void
+  same_solution(const std::string &name, const Result &a, const Result &b)
+  {
+    const double de = (b.energy - a.energy) / a.energy;
+    mpm_test::report(std::abs(de) <= 1e-8,
+                     name + ": the same strain energy to 1e-8",
+                     de);
+    if (a.reaction != 0)
+      {
+        const double dr = (b.reaction - a.reaction) / a.reaction;
+        mpm_test::report(std::abs(dr) <= 1e-8,
+                         name + ": the same platen reaction to 1e-8",
+                         dr);
+      }
+    mpm_test::report(a.newton == b.newton,
+                     name + ": the same Newton iterations",
+                     b.newton);
   }
 } // namespace implicit_run

@@ -21,11 +21,12 @@ namespace mpm
         gmres,
         direct
       };
-      /// The package behind LinearSolver::direct.
+      /// The package behind LinearSolver::direct (either factorises on
+      /// one process, the matrix gathered there).
       enum class DirectSolver
       {
-        mumps, ///< multifrontal, distributed over the ranks
-        klu    ///< serial (the matrix gathered on one rank)
+        mumps, ///< multifrontal
+        klu
       };
       enum class Preconditioner
       {

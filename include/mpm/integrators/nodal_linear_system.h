@@ -270,20 +270,20 @@ namespace mpm
       const Parameters::ImplicitSolver                &p,
       dealii::TrilinosWrappers::MPI::Vector           &x);
 
-    MPI_Comm                          comm = MPI_COMM_SELF;
-    NodeGroups                        grid_groups;
-    std::vector<Index>                node_to_global; ///< per local node
-    dealii::IndexSet                  owned, relevant;
-    dealii::AffineConstraints<double> node_constraints;
-    dealii::AffineConstraints<double> prescribed_motion;
-    bool                              predictor        = false;
-    bool                              moves_prescribed = false;
     /// x = K^-1 rhs by the sparse direct solver @p package, the
     /// factorisation on one process.
     void
     solve_direct(const Parameters::ImplicitSolver::DirectSolver package,
                  dealii::TrilinosWrappers::MPI::Vector         &x);
 
+    MPI_Comm                               comm = MPI_COMM_SELF;
+    NodeGroups                             grid_groups;
+    std::vector<Index>                     node_to_global; ///< per local node
+    dealii::IndexSet                       owned, relevant;
+    dealii::AffineConstraints<double>      node_constraints;
+    dealii::AffineConstraints<double>      prescribed_motion;
+    bool                                   predictor        = false;
+    bool                                   moves_prescribed = false;
     dealii::TrilinosWrappers::SparseMatrix matrix;
     dealii::TrilinosWrappers::MPI::Vector  rhs;
     double diagonal_scale = 1; ///< of the constrained rows' diagonal
