@@ -47,8 +47,9 @@ namespace mpm
           "family (Shape functions/Family = " +
           names_of([](const FamilyTraits &f) { return f.allows_apic; }) +
           "): with the standard Q1 functions the affine transfer C_p = sum_i "
-          "v_i grad N_ip extrapolates the bilinear mode beyond the cell and "
-          "the step is unstable (doc/theory/apic.md)");
+          "v_i grad N_ip grows without bound where a particle enters a cell "
+          "whose far nodes only it reaches, and the step is unstable "
+          "(doc/theory/apic.md)");
       if (use.fixed_geometry && domain_follows_deformation)
         throw InputError(
           "Implicit solver/Geometry = fixed keeps the particles' domains as "

@@ -20,8 +20,9 @@ namespace mpm
       static constexpr bool needs_axis_parallel_grid   = false;
       static constexpr bool domain_follows_deformation = false;
       static constexpr bool tracks_corners             = false;
-      /// C_p = sum_i v_i grad N_ip extrapolates the bilinear mode beyond
-      /// the cell and the step is unstable (doc/theory/apic.md).
+      /// C_p = sum_i v_i grad N_ip grows like 1/xi where a particle is
+      /// a fraction xi into a cell whose far nodes only it reaches, and
+      /// the step is unstable (doc/theory/apic.md).
       static constexpr bool allows_apic = false;
       /// The 1D convection correction is derived for this family.
     };
