@@ -14,7 +14,8 @@
 # CPDI+filter+force+APIC+midpoint+leapfrog. The table gives the measures at
 # the end time and the largest RMS errors over all outputs (set INTERVAL).
 # Environment: END (end time, default 6.2), CELLS (grid cells per direction
-# over [-1.25,1.25], default 50: h = 0.05), CFL (default 0.5), VARIANTS
+# over [-1.25,1.25], default 50: h = 0.05), CFL (default 0.5), SCHEME
+# (Time stepping/Scheme, default MUSL), VARIANTS
 # (default below), NP (MPI ranks per run, default 1), JOBS (runs at the same
 # time, default 1), REFINEMENTS (refinements of the disk's body mesh,
 # default that of prm/spinning_disk.prm, 4: 12 288 particles; 3 gives
@@ -33,6 +34,7 @@ np=${NP:-1}
 jobs=${JOBS:-1}
 mpm=${MPM:-$root/build/mpm}
 cfl=${CFL:-0.5}
+scheme=${SCHEME:-MUSL}
 vtu=${VTU:-false}
 interval=${INTERVAL:-$end}
 csv=${CSV:-true}
@@ -80,6 +82,7 @@ end
 subsection Time stepping
   set End time = $end
   set CFL number = $cfl
+  set Scheme = $scheme
   set Velocity transfer = $transfer
   set Leapfrog start = $leapfrog
 end
@@ -135,7 +138,7 @@ PRM
 start=$(date +%s)
 # at most $jobs runs at a time (xargs -P); each prints its row when it ends
 export -f run_variant
-export root out cells end cfl interval vtu csv constants refinements np mpm h bind
+export root out cells end cfl scheme interval vtu csv constants refinements np mpm h bind
 printf '%s\n' $variants |
   xargs -P "$jobs" -I{} bash -c 'run_variant "$1"; cat "$out/$1/row.csv"' _ {}
 echo "variant,h,cfl,t,sigma_rr_rms_error,sigma_rt_rms,v_r_rms,angular_momentum_change,energy_change,sigma_rr_max,sigma_rt_max,wall_s" > "$table"
