@@ -14,14 +14,21 @@
 
 DEAL_II_DISABLE_EXTRA_DIAGNOSTICS
 #include <Amesos.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Import.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_Map.h>
+#include <Epetra_MpiComm.h>
 #include <Epetra_MultiVector.h>
+#include <Epetra_Vector.h>
 #include <Teuchos_ParameterList.hpp>
 DEAL_II_ENABLE_EXTRA_DIAGNOSTICS
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 namespace mpm
@@ -536,6 +543,37 @@ namespace mpm
     return control.last_step();
   }
 
+  namespace
+  {
+    /// x = A^-1 b by Amesos' @p package on the processes of A's map: ""
+    /// or what failed.
+    std::string
+    factorise_and_solve(const bool          klu,
+                        Epetra_CrsMatrix   &A,
+                        Epetra_MultiVector &x,
+                        Epetra_MultiVector &b)
+    {
+      Epetra_LinearProblem                     problem(&A, &x, &b);
+      Amesos                                   factory;
+      const std::unique_ptr<Amesos_BaseSolver> direct(
+        factory.Create(klu ? "Amesos_Klu" : "Amesos_Mumps", problem));
+      if (!direct)
+        return std::string("Trilinos Amesos has no solver ") +
+               (klu ? "KLU" : "MUMPS");
+      const auto failed = [](const int status, const char *phase) {
+        return std::string("the direct solver's ") + phase +
+               " failed (Amesos status " + std::to_string(status) + ")";
+      };
+      if (const int status = direct->SymbolicFactorization())
+        return failed(status, "symbolic factorization");
+      if (const int status = direct->NumericFactorization())
+        return failed(status, "factorization");
+      if (const int status = direct->Solve())
+        return failed(status, "solve");
+      return "";
+    }
+  } // namespace
+
   template <int dim>
   void
   NodalLinearSystem<dim>::solve_direct(
@@ -543,31 +581,73 @@ namespace mpm
     TrilinosWrappers::MPI::Vector                 &x)
   {
     const bool klu = package == Parameters::ImplicitSolver::DirectSolver::klu;
-    Epetra_LinearProblem problem(const_cast<Epetra_CrsMatrix *>(
-                                   &matrix.trilinos_matrix()),
-                                 &x.trilinos_vector(),
-                                 &rhs.trilinos_vector());
-    Amesos               factory;
-    const std::unique_ptr<Amesos_BaseSolver> direct(
-      factory.Create(klu ? "Amesos_Klu" : "Amesos_Mumps", problem));
-    AssertThrow(direct,
-                ExcMessage("Trilinos Amesos has no solver " +
-                           std::string(klu ? "KLU" : "MUMPS")));
-    // MUMPS on one process: with several, its dynamic scheduling makes the
-    // round-off depend on timing, and a run would not repeat itself (nor
-    // resume from a checkpoint bit for bit)
-    Teuchos::ParameterList parameters;
-    parameters.set("MaxProcs", 1);
-    direct->SetParameters(parameters);
-    const auto check = [](const int status, const char *phase) {
-      AssertThrow(status == 0,
-                  ExcMessage(std::string("the direct solver's ") + phase +
-                             " failed (Amesos status " +
-                             std::to_string(status) + ")"));
-    };
-    check(direct->SymbolicFactorization(), "symbolic factorization");
-    check(direct->NumericFactorization(), "factorization");
-    check(direct->Solve(), "solve");
+    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      {
+        const std::string error =
+          factorise_and_solve(klu,
+                              const_cast<Epetra_CrsMatrix &>(A),
+                              x.trilinos_vector(),
+                              rhs.trilinos_vector());
+        if (!error.empty())
+          throw std::runtime_error(error);
+        return;
+      }
+    // On several ranks the matrix and the right-hand side are gathered on
+    // rank 0 and factorised there by a solver that sees one process only.
+    // Amesos' own distributed entry (even with MUMPS on one process of
+    // it) gives solutions that differ in their last bits from run to run:
+    // a run would neither repeat itself nor resume from a checkpoint bit
+    // for bit.
+    const bool          root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const int           n    = A.NumGlobalRows();
+    const Epetra_Map    on_root(n, root ? n : 0, 0, A.Comm());
+    const Epetra_Import gather(on_root, A.RowMap());
+    Epetra_CrsMatrix    A_root(Copy, on_root, 0);
+    Epetra_Vector       b_root(on_root), x_root(on_root);
+    // Epetra's negative codes are errors, its positive ones warnings
+    const bool gathered =
+      Utilities::MPI::min(
+        A_root.Import(A, gather, Insert) >= 0 && A_root.FillComplete() >= 0 &&
+            b_root.Import(rhs.trilinos_vector(), gather, Insert) >= 0 ?
+          1 :
+          0,
+        comm) == 1;
+    std::string error =
+      gathered ? "" : "gathering the matrix on one process failed";
+    if (gathered && root)
+      {
+        const Epetra_MpiComm self(MPI_COMM_SELF);
+        const Epetra_Map     serial(n, n, 0, self);
+        Epetra_CrsMatrix     A_serial(Copy, serial, 0);
+        std::vector<int>     columns;
+        bool                 copied = true;
+        for (int r = 0; r < n; ++r)
+          {
+            int     entries;
+            double *values;
+            int    *local;
+            A_root.ExtractMyRowView(r, entries, values, local);
+            columns.resize(entries);
+            for (int e = 0; e < entries; ++e)
+              columns[e] = A_root.ColMap().GID(local[e]);
+            copied =
+              copied &&
+              A_serial.InsertGlobalValues(r, entries, values, columns.data()) >=
+                0;
+          }
+        copied = copied && A_serial.FillComplete() >= 0;
+        Epetra_Vector b_serial(View, serial, b_root.Values());
+        Epetra_Vector x_serial(View, serial, x_root.Values());
+        error = copied ?
+                  factorise_and_solve(klu, A_serial, x_serial, b_serial) :
+                  "copying the gathered matrix failed";
+      }
+    // every rank learns the outcome before any of them throws
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw std::runtime_error(error);
+    x.trilinos_vector().Export(x_root, gather, Insert);
   }
 
   template <int dim>
