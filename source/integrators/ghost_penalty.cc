@@ -124,28 +124,31 @@ namespace mpm
     for (const Face &face : candidates)
       if (all_active(face.cell) && all_active(face.neighbor) &&
           (weak(face.cell) || weak(face.neighbor)))
-        faces.push_back(face);
+        faces.push_back(face_matrix(grid, face));
   }
 
   template <int dim>
   void
-  GhostPenalty<dim>::select_all_faces()
+  GhostPenalty<dim>::select_all_faces(const BackgroundGrid<dim> &grid)
   {
-    faces = candidates;
+    faces.clear();
+    for (const Face &face : candidates)
+      faces.push_back(face_matrix(grid, face));
   }
 
   template <int dim>
-  void
+  typename GhostPenalty<dim>::FaceMatrix
   GhostPenalty<dim>::face_matrix(const BackgroundGrid<dim> &grid,
-                                 const Face                &face,
-                                 std::vector<unsigned int> &nodes,
-                                 FullMatrix<double>        &M) const
+                                 const Face                &face) const
   {
-    constexpr unsigned int nv    = BackgroundGrid<dim>::n_vertices;
-    const auto            &own   = grid.geometry(face.cell);
-    const auto            &other = grid.geometry(face.neighbor);
-    const unsigned int    *a     = grid.nodes(face.cell);
-    const unsigned int    *b     = grid.nodes(face.neighbor);
+    FaceMatrix                 result;
+    std::vector<unsigned int> &nodes = result.nodes;
+    FullMatrix<double>        &M     = result.M;
+    constexpr unsigned int     nv    = BackgroundGrid<dim>::n_vertices;
+    const auto                &own   = grid.geometry(face.cell);
+    const auto                &other = grid.geometry(face.neighbor);
+    const unsigned int        *a     = grid.nodes(face.cell);
+    const unsigned int        *b     = grid.nodes(face.neighbor);
     // The face's nodes: the cell's, then the neighbour's not on the face.
     nodes.assign(a, a + nv);
     unsigned int in_list[nv];
@@ -207,23 +210,21 @@ namespace mpm
           for (unsigned int j = 0; j < n; ++j)
             M(i, j) += scale * h * ds * jump[i] * jump[j];
       }
+    return result;
   }
 
   template <int dim>
   void
-  GhostPenalty<dim>::add_to_system(const BackgroundGrid<dim> &grid,
-                                   const NodalVector         &u,
-                                   const bool                 with_matrix,
-                                   NodalLinearSystem<dim>    &system,
-                                   NodalVector &internal_force) const
+  GhostPenalty<dim>::add_to_system(const NodalVector      &u,
+                                   const bool              with_matrix,
+                                   NodalLinearSystem<dim> &system,
+                                   NodalVector            &internal_force) const
   {
-    std::vector<unsigned int>            nodes;
-    FullMatrix<double>                   M, K;
+    FullMatrix<double>                   K;
     Vector<double>                       rhs;
     std::vector<types::global_dof_index> indices;
-    for (const Face &face : faces)
+    for (const auto &[nodes, M] : faces)
       {
-        face_matrix(grid, face, nodes, M);
         const unsigned int n = nodes.size();
         rhs.reinit(n * dim);
         if (with_matrix)
@@ -251,17 +252,13 @@ namespace mpm
 
   template <int dim>
   double
-  GhostPenalty<dim>::form(const BackgroundGrid<dim> &grid,
-                          const NodalVector         &u,
-                          const NodalVector         &w,
-                          const MPI_Comm             comm) const
+  GhostPenalty<dim>::form(const NodalVector &u,
+                          const NodalVector &w,
+                          const MPI_Comm     comm) const
   {
-    std::vector<unsigned int> nodes;
-    FullMatrix<double>        M;
-    double                    g = 0;
-    for (const Face &face : faces)
+    double g = 0;
+    for (const auto &[nodes, M] : faces)
       {
-        face_matrix(grid, face, nodes, M);
         for (unsigned int i = 0; i < nodes.size(); ++i)
           for (unsigned int j = 0; j < nodes.size(); ++j)
             for (unsigned int c = 0; c < dim; ++c)

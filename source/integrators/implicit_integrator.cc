@@ -1358,8 +1358,13 @@ namespace mpm
                           add_cell_system(cell, pic, dt, with_matrix, error);
                  });
     if (ok && ghost_penalty.enabled())
-      ghost_penalty.add_to_system(
-        state.background, increment, with_matrix, system, internal_force);
+      {
+        TimerOutput::Scope penalty_timer(state.timer, "ghost penalty");
+        ghost_penalty.add_to_system(increment,
+                                    with_matrix,
+                                    system,
+                                    internal_force);
+      }
     const double inertia = with_inertia ? add_inertia(dt, with_matrix) : 0.;
     // Every rank takes part in the exchanges, whatever happened here.
     if (node_average && with_matrix)

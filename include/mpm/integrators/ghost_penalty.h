@@ -62,16 +62,18 @@ namespace mpm
 
     /// This step's faces from the unknowns @p active (per node-local
     /// index) and the covered @p support and @p full_support (int N_a)
-    /// of each node (ghost values up to date).
+    /// of each node (ghost values up to date), with their matrices: the
+    /// grid does not move during a step, so every assembly of the step
+    /// uses them.
     void
     select_faces(const BackgroundGrid<dim> &grid,
                  const std::vector<char>   &active,
                  const NodalVector         &support,
                  const NodalVector         &full_support);
 
-    /// Every face this rank may assemble (tests).
+    /// Every face this rank may assemble, with its matrix (tests).
     void
-    select_all_faces();
+    select_all_faces(const BackgroundGrid<dim> &grid);
 
     /// Faces selected on this rank.
     unsigned int
@@ -84,18 +86,14 @@ namespace mpm
     /// to the right-hand side) and, if @p with_matrix, its matrix G, for
     /// the increment @p u (dim components per node, ghosts up to date).
     void
-    add_to_system(const BackgroundGrid<dim> &grid,
-                  const NodalVector         &u,
-                  const bool                 with_matrix,
-                  NodalLinearSystem<dim>    &system,
-                  NodalVector               &internal_force) const;
+    add_to_system(const NodalVector      &u,
+                  const bool              with_matrix,
+                  NodalLinearSystem<dim> &system,
+                  NodalVector            &internal_force) const;
 
     /// g(u, w) over the selected faces of every rank (collective).
     double
-    form(const BackgroundGrid<dim> &grid,
-         const NodalVector         &u,
-         const NodalVector         &w,
-         const MPI_Comm             comm) const;
+    form(const NodalVector &u, const NodalVector &w, const MPI_Comm comm) const;
 
   private:
     /// An owned cell and the face (deal.II order) to its neighbour.
@@ -104,16 +102,20 @@ namespace mpm
       unsigned int cell, face, neighbor;
     };
 
-    /// The face's nodes (the cell's vertices, then the neighbour's others)
-    /// and the scalar matrix M of g (the vector form is M (x) I).
-    void
-    face_matrix(const BackgroundGrid<dim>  &grid,
-                const Face                 &face,
-                std::vector<unsigned int>  &nodes,
-                dealii::FullMatrix<double> &M) const;
+    /// A selected face's nodes (the cell's vertices, then the
+    /// neighbour's others) and the scalar matrix M of g on them (the
+    /// vector form is M (x) I).
+    struct FaceMatrix
+    {
+      std::vector<unsigned int>  nodes;
+      dealii::FullMatrix<double> M;
+    };
 
-    double            scale = 0;  ///< beta E
-    std::vector<Face> candidates; ///< that this rank assembles (reinit())
-    std::vector<Face> faces;      ///< this step's
+    FaceMatrix
+    face_matrix(const BackgroundGrid<dim> &grid, const Face &face) const;
+
+    double                  scale = 0;  ///< beta E
+    std::vector<Face>       candidates; ///< that this rank assembles
+    std::vector<FaceMatrix> faces;      ///< this step's
   };
 } // namespace mpm
