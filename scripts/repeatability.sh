@@ -2,9 +2,9 @@
 # Does a run repeat itself bit for bit? Runs CASE.prm N times on NP ranks,
 # each in a fresh folder, and counts the distinct results: the statistics
 # file and the last checkpoint's particles (if the case writes
-# checkpoints), hashed together. Prints one
-# line per distinct result (how many runs gave it) and "distinct: K";
-# K = 1 when every run is equal bit for bit.
+# checkpoints), hashed together. Prints one line per distinct result (how
+# many runs gave it) and "distinct: K"; K = 1 when every run is equal bit
+# for bit.
 # Usage: scripts/repeatability.sh CASE.prm NP N [OUT]
 #   e.g. scripts/repeatability.sh tests/checkpoint/moving_boundary_2d.prm 2 30
 #   (about 1.5 s a run)

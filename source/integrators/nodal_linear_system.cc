@@ -21,7 +21,6 @@ DEAL_II_DISABLE_EXTRA_DIAGNOSTICS
 #include <Epetra_MpiComm.h>
 #include <Epetra_MultiVector.h>
 #include <Epetra_Vector.h>
-#include <Teuchos_ParameterList.hpp>
 DEAL_II_ENABLE_EXTRA_DIAGNOSTICS
 
 #include <algorithm>
@@ -605,14 +604,15 @@ namespace mpm
     const Epetra_Import gather(on_root, A.RowMap());
     Epetra_CrsMatrix    A_root(Copy, on_root, 0);
     Epetra_Vector       b_root(on_root), x_root(on_root);
-    // Epetra's negative codes are errors, its positive ones warnings
+    // Epetra's negative codes are errors, its positive ones warnings.
+    // Every rank makes each of these collective calls, whatever an
+    // earlier one returned.
+    const int import_status = A_root.Import(A, gather, Insert);
+    const int fill_status   = A_root.FillComplete();
+    const int rhs_status = b_root.Import(rhs.trilinos_vector(), gather, Insert);
     const bool gathered =
-      Utilities::MPI::min(
-        A_root.Import(A, gather, Insert) >= 0 && A_root.FillComplete() >= 0 &&
-            b_root.Import(rhs.trilinos_vector(), gather, Insert) >= 0 ?
-          1 :
-          0,
-        comm) == 1;
+      Utilities::MPI::min(std::min({import_status, fill_status, rhs_status}),
+                          comm) >= 0;
     std::string error =
       gathered ? "" : "gathering the matrix on one process failed";
     if (gathered && root)
