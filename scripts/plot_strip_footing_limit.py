@@ -4,7 +4,7 @@ scripts/strip_footing_study.sh run with GEOMETRY=fixed (OUT/<variant>_<h>.txt,
 settlement/B and q/c_u), the last q of each run, that is the limit load of
 the discretization once the curve is level, as its distance from Prandtl's
 (2 + pi) c_u against the cell size h, one line per remedy, with a slope-one
-line. A run whose q spans more than 0.1% over the last half of its steps
+line. A run whose q spans more than 0.1% over the last third of its steps
 (no limit load: standard MPM still rising, or a q that alternates) is
 drawn with an open marker. Prints the table.
 Usage: plot_strip_footing_limit.py STUDY_DIR OUT.png"""
@@ -26,8 +26,8 @@ for f in glob.glob(f"{study}/*_*.txt"):
     variant, h = os.path.basename(f)[:-4].rsplit("_", 1)
     d = pd.read_csv(f, sep=r"\s+")
     q = d.q_over_cu.to_numpy()
-    half = q[len(q) // 2:]
-    change = (half.max() - half.min()) / q[-1]
+    last = q[-(len(q) // 3):]
+    change = (last.max() - last.min()) / q[-1]
     runs.setdefault(variant, []).append((float(h), q[-1], change))
 colors = {"theta-bar": "C0", "node": "C1", "filter": "C2", "standard": "C3"}
 fig, ax = plt.subplots(figsize=(6, 4.5))
@@ -38,7 +38,7 @@ for variant in sorted(runs):
     remedy = next((r for r in colors if variant.startswith(r)), None)
     for h, q, change in pts:
         level = "yes" if abs(change) <= 1e-3 else \
-            f"no: q spans {change:.2%} over the last half of the steps"
+            f"no: q spans {change:.2%} over the last third of the steps"
         print(f"| {variant} | {h:g} | {q:.3f} | {q / prandtl - 1:+.2%} | "
               f"{level} |")
     line, = ax.loglog([p[0] for p in pts],

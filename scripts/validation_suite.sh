@@ -219,14 +219,14 @@ part_strip_footing() {
     GRID=graded GEOMETRY=fixed END=0.3 REMEDIES="standard theta-bar filter" \
       "$study" "$res/strip-footing" $fixed &&
     $py "$root/scripts/plot_strip_footing.py" "$res/strip-footing" "$figs/strip_footing.png" &&
-    GRID=graded GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.002 SOLVER=direct \
+    GRID=graded GEOMETRY=fixed STIFFNESS=100000 STEP=0.00001 END=0.0003 SOLVER=direct \
       REMEDIES="theta-bar filter standard" "$study" "$res/strip-footing-limit" $limit &&
     $py "$root/scripts/plot_strip_footing_limit.py" "$res/strip-footing-limit" "$figs/strip_footing_limit.png" &&
-    GRID=graded GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.002 SOLVER=direct \
+    GRID=graded GEOMETRY=fixed STIFFNESS=100000 STEP=0.00001 END=0.0003 SOLVER=direct \
       REMEDIES=node "$study" "$res/strip-footing-node" $limit &&
     for run in $edges; do
-      GRID=graded EDGE=${run#*:} GEOMETRY=fixed STIFFNESS=100000 STEP=0.0001 END=0.001 SOLVER=direct \
-        REMEDIES=theta-bar "$study" "$res/strip-footing-edge" ${run%%:*} || return 1
+      GRID=graded EDGE=${run#*:} GEOMETRY=fixed STIFFNESS=100000 STEP=0.00001 END=0.0003 SOLVER=direct \
+        REMEDIES="theta-bar filter" "$study" "$res/strip-footing-edge" ${run%%:*} || return 1
     done
 }
 

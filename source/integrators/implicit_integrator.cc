@@ -859,7 +859,9 @@ namespace mpm
      * step's displacement gradient that changes the material's increment
      * by @p dh_eff (the same without volumetric smoothing): the geometric
      * terms from d j = j tr(f^-1 dh) and d f^-1 = -f^-1 dh f^-1, the
-     * material's through its tangent @p T = d sigma / d h.
+     * material's through its tangent @p T = d sigma / d h. In a @p fixed
+     * geometry the force takes P = j sigma (no push-forward), and so does
+     * its change.
      */
     template <int dim>
     Tensor<2, dim>
@@ -868,9 +870,12 @@ namespace mpm
                        const Tensor<2, dim> &f_inv,
                        const Tensor<4, 3>   &T,
                        const Tensor<2, dim> &dh,
-                       const Tensor<2, dim> &dh_eff)
+                       const Tensor<2, dim> &dh_eff,
+                       const bool            fixed)
     {
-      const Tensor<2, dim> ds      = material_change(T, dh_eff);
+      const Tensor<2, dim> ds = material_change(T, dh_eff);
+      if (fixed)
+        return (j * trace(f_inv * dh)) * s + j * ds;
       const Tensor<2, dim> f_inv_T = transpose(f_inv);
       const Tensor<2, dim> d_f_inv = -f_inv * dh * f_inv;
       return (j * trace(f_inv * dh)) * s * f_inv_T + j * ds * f_inv_T +
@@ -910,8 +915,9 @@ namespace mpm
     if (with_matrix)
       cell_matrix.reinit(n, n);
     cell_rhs.reinit(n);
-    double *const              f_int = internal_force.begin();
-    double *const              f_ext = external_force.begin();
+    double *const f_int          = internal_force.begin();
+    double *const f_ext          = external_force.begin();
+    const bool    fixed_geometry = state.params.implicit.fixed_geometry;
     materials::PointKinematics kinematics, tangent_kinematics;
     kinematics.dt         = dt;
     tangent_kinematics.dt = dt;
@@ -990,8 +996,12 @@ namespace mpm
             for (unsigned int k = i; k < dim; ++k)
               filtered_taus[p][i][k] = q.j * s[i][k];
         // First Piola-Kirchhoff stress with respect to the start of the
-        // step, P = j sigma f^-T: f_int,a = V_n P G_a.
-        const Tensor<2, dim> P = q.j * s * transpose(q.f_inv);
+        // step, P = j sigma f^-T: f_int,a = V_n P G_a. A fixed geometry
+        // takes the Kirchhoff stress j sigma on the undeformed grid, so that
+        // its equilibrium is that of the next step's start (f^-T = I + O(h)
+        // there would leave each step out of balance by O(h) sigma).
+        const Tensor<2, dim> P =
+          fixed_geometry ? q.j * s : q.j * s * transpose(q.f_inv);
         for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
           {
             const unsigned int   a = stencils.node(e);
@@ -1039,7 +1049,7 @@ namespace mpm
             if (total)
               by_average = q.alpha / (dim * J_bar) * q.f;
             const Tensor<2, dim> dP = first_piola_change(
-              s, q.j, q.f_inv, T, Tensor<2, dim>(), by_average);
+              s, q.j, q.f_inv, T, Tensor<2, dim>(), by_average, fixed_geometry);
             node_force_derivative.assign(n, 0.);
             for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
               {
@@ -1074,8 +1084,8 @@ namespace mpm
                       kirchhoff_change(s, q.j, q.f_inv, T, dh, dh_eff);
                     continue;
                   }
-                const Tensor<2, dim> dP =
-                  first_piola_change(s, q.j, q.f_inv, T, dh, dh_eff);
+                const Tensor<2, dim> dP = first_piola_change(
+                  s, q.j, q.f_inv, T, dh, dh_eff, fixed_geometry);
                 for (unsigned int e = stencils.begin(p); e < stencils.end(p);
                      ++e)
                   {
