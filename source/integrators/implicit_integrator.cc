@@ -1116,7 +1116,8 @@ namespace mpm
               typename NodalLinearSystem<dim>::CellPressure q;
               const bool                                    total =
                 state.bodies[b].material->stress_from_deformation_gradient();
-              if (!smoothing->volume_gradient(b, total, q.g, q.b, q.volume))
+              if (!smoothing->volume_gradient(
+                    b, total, fixed_geometry, q.g, q.b, q.volume))
                 continue;
               q.lambda       = split_lambda[b];
               q.rest_modulus = split_rest_modulus[b];

@@ -47,6 +47,7 @@ namespace mpm
           s.V0 = s.V = s.V_n = s.V_n_tr_h = 0;
           s.V_n_G.assign(n, Tensor<1, dim>());
           s.V_g.assign(n, Tensor<1, dim>());
+          s.V_G.assign(n, Tensor<1, dim>());
         }
     }
 
@@ -65,6 +66,7 @@ namespace mpm
         {
           s.V_n_G[b] += p.V_n * p.G[b];
           s.V_g[b] += V * (f_inv_T * p.G[b]);
+          s.V_G[b] += V * p.G[b];
         }
     }
 
@@ -154,6 +156,7 @@ namespace mpm
     bool
     LinearizedCellSmoothing<dim>::volume_gradient(const unsigned int   b,
                                                   const bool           total,
+                                                  const bool           fixed,
                                                   std::vector<double> &g,
                                                   std::vector<double> &b_change,
                                                   double              &V) const
@@ -162,13 +165,14 @@ namespace mpm
       V             = total ? s.V : s.V_n;
       if (!cell_average[b] || !(V > 0))
         return false;
-      const auto &change = total ? s.V_g : s.V_n_G;
+      const auto &change    = total ? s.V_g : s.V_n_G;
+      const auto &direction = fixed ? s.V_G : s.V_g;
       g.resize(n_nodes * dim);
       b_change.resize(n_nodes * dim);
       for (unsigned int a = 0; a < n_nodes; ++a)
         for (unsigned int k = 0; k < dim; ++k)
           {
-            g[a * dim + k]        = s.V_g[a][k];
+            g[a * dim + k]        = direction[a][k];
             b_change[a * dim + k] = change[a][k];
           }
       return true;

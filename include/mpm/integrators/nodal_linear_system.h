@@ -136,10 +136,10 @@ namespace mpm
      * One body's stiff volumetric part in one cell, for `Preconditioner =
      * AMG with cell pressure`: (lambda / V) g b^T, with b (dim entries
      * per node of the cell's list, node-major) the derivative of the
-     * cell's volume change by the nodal increment, g the gradient of the
-     * volume in the current configuration, which the pressure's force
-     * takes (empty: g = b), lambda the split's lambda_s = lambda - gamma
-     * mu (`Cell pressure gamma`), and rest_modulus = (gamma + 1) mu the
+     * cell's volume change by the nodal increment, g the direction the
+     * pressure's force takes (the current volume's gradient; in a fixed
+     * geometry sum V G; empty: g = b), lambda the split's lambda_s = lambda -
+     * gamma mu (`Cell pressure gamma`), and rest_modulus = (gamma + 1) mu the
      * volumetric stiffness the rest keeps, for the Schur estimate.
      */
     struct CellPressure

@@ -128,14 +128,17 @@ namespace mpm
        * The stiff part lambda g b^T / V of the smoothed tangent of body
        * @p b in the cell (entries [a dim + k] for node a of the cell's
        * list, direction k): the pressure's force takes g = sum V f^-T
-       * G_a, the current volume's gradient; the averaged volume change
-       * is b . u / V, with b = sum V_n G_a and V = sum V_n for a rate
-       * model, b = g and V the current volume for a total one (@p
-       * total). False if the body has no particle in the cell.
+       * G_a, the current volume's gradient (in a @p fixed geometry,
+       * whose force takes j sigma on the undeformed grid, g = sum V G_a);
+       * the averaged volume change is b . u / V, with b = sum V_n G_a and
+       * V = sum V_n for a rate model, b = sum V f^-T G_a and V the
+       * current volume for a total one (@p total). False if the body has
+       * no particle in the cell.
        */
       bool
       volume_gradient(const unsigned int   b,
                       const bool           total,
+                      const bool           fixed,
                       std::vector<double> &g,
                       std::vector<double> &b_change,
                       double              &V) const;
@@ -144,8 +147,9 @@ namespace mpm
       struct Sums
       {
         double V0 = 0, V = 0, V_n = 0, V_n_tr_h = 0;
-        /// sum V_n G_b (rate) and sum V f^-T G_b (total) per node b
-        std::vector<dealii::Tensor<1, dim>> V_n_G, V_g;
+        /// sum V_n G_b (rate), sum V f^-T G_b (total) and sum V G_b
+        /// (the fixed geometry's force) per node b
+        std::vector<dealii::Tensor<1, dim>> V_n_G, V_g, V_G;
       };
       std::vector<char> cell_average; ///< per body
       bool              any_body = false;
