@@ -3,9 +3,9 @@
 output (OUT/<variant>_<h>.txt: settlement/B, q/c_u): standard MPM,
 theta-bar and the filter on every grid of the study, with Prandtl's limit (2 + pi) c_u,
 one panel per shape-function family (variant names remedy-family, e.g.
-theta-bar-CPDI; no suffix: standard; the suffixes -fixed, Implicit
-solver/Geometry = fixed, and -graded, the graded grids, make panels of
-their own). A curve ends where its run stopped.
+theta-bar-CPDI; no suffix: standard; the suffixes -fixed and
+-small-strain, Implicit solver/Geometry = fixed and small strain, and
+-graded, the graded grids, make panels of their own). A curve ends where its run stopped.
 Usage: plot_strip_footing.py STUDY_DIR OUT.png"""
 import glob
 import math
@@ -46,9 +46,11 @@ for ax, family in zip(axes[0], families):
     ax.set_ylim(0, 12)
     ax.legend(loc="lower right", ncol=2, fontsize="small")
     parts = family.split("-")
-    title = "-".join(p for p in parts if p not in ("fixed", "graded"))
+    geometry_words = ("fixed", "small", "strain", "graded")
+    title = "-".join(p for p in parts if p not in geometry_words)
     title = f"{title or 'standard'} family, "
-    title += "fixed geometry" if "fixed" in parts else "updated geometry"
+    title += ("small strain" if "small" in parts else
+              "fixed geometry" if "fixed" in parts else "updated geometry")
     if "graded" in parts:
         title += ", graded grids (h: finest cells)"
     ax.set_title(title)

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The strip footing's limit load against the grid: from a
-scripts/strip_footing_study.sh run with GEOMETRY=fixed (OUT/<variant>_<h>.txt,
+scripts/strip_footing_study.sh run with GEOMETRY="small strain" or fixed
+(OUT/<variant>_<h>.txt,
 settlement/B and q/c_u), the last q of each run, that is the limit load of
 the discretization once the curve is level, as its distance from Prandtl's
 (2 + pi) c_u against the cell size h, one line per remedy, with a slope-one
@@ -44,7 +45,7 @@ for variant in sorted(runs):
     line, = ax.loglog([p[0] for p in pts],
                       [abs(p[1] / prandtl - 1) for p in pts], "-",
                       color=colors.get(remedy, "k"),
-                      label=variant.split("-fixed")[0])
+                      label=variant.split("-small-strain")[0].split("-fixed")[0])
     for h, q, change in pts:
         ax.loglog(h, abs(q / prandtl - 1), "o", color=line.get_color(),
                   mfc=line.get_color() if abs(change) <= 1e-3 else "none")
@@ -54,7 +55,9 @@ ax.axhline(0.02, color="grey", lw=0.8)
 ax.text(hs[0], 0.021, "2%", color="grey")
 ax.set_xlabel("h / B (cells over the collapse mechanism)")
 ax.set_ylabel("|q / ((2 + $\\pi$) $c_u$) - 1|")
-ax.set_title("strip footing: limit load, fixed geometry")
+ax.set_title("strip footing: limit load, " +
+             ("small strain" if any("small-strain" in v for v in runs) else
+              "fixed geometry"))
 ax.legend()
 fig.tight_layout()
 fig.savefig(out, dpi=120)

@@ -24,8 +24,9 @@
 # volume = smoothed unless PARTICLE_VOLUME=own. MIN_J=1 writes the particle tables
 # and adds the smallest volume ratio V/V0 of the soil at 0.2 B.
 # GEOMETRY=fixed runs with Implicit solver/Geometry = fixed (equilibrium
-# in the undeformed shape, the small-deformation analysis) and appends
-# -fixed to the variant's name. END (default 0.5) is the last
+# in the undeformed shape) and appends -fixed to the variant's name;
+# GEOMETRY="small strain" adds the linearized kinematics (the
+# small-deformation analysis) and appends -small-strain. END (default 0.5) is the last
 # settlement / B, STEP (default 0.01) the load step / B, SOLVER (default
 # automatic) the Implicit solver/Linear solver. GRID=graded takes each h as the cell size on the region
 # of the collapse mechanism only, the cells growing towards the far walls
@@ -62,6 +63,7 @@ for h in ${@:-0.25 0.125 0.0625}; do
     variant=$remedy
     [ $family = standard ] || variant=$remedy-$family
     [ "${GEOMETRY:-updated}" = fixed ] && variant=$variant-fixed
+    [ "${GEOMETRY:-updated}" = "small strain" ] && variant=$variant-small-strain
     stiffness=""
     if [ -n "${STIFFNESS:-}" ]; then
       variant=$variant-E$STIFFNESS

@@ -61,6 +61,14 @@ namespace mpm
           throw InputError(section + "/Material/Model = " + material.name() +
                            " has no tangent for Time stepping/Integrator = " +
                            name() + "; use the explicit integrator");
+        if (p.implicit.small_strain && !body.is_rigid() &&
+            !material.small_strain_increment())
+          throw InputError(
+            section + "/Material/Model = " + material.name() +
+            " has no small-strain form for Implicit solver/Geometry = small "
+            "strain, which takes the rate-form models (linear elastic, von "
+            "Mises plasticity) with Strain increment = start of step; use "
+            "Geometry = fixed");
         if (!dynamic && !material.has_static_shear_stiffness())
           throw InputError(section + "/Material/Model = " + material.name() +
                            " has no shear stiffness at rest, so a "
@@ -758,8 +766,9 @@ namespace mpm
     // the step's displacement gradient with respect to the configuration
     // at the start of the step; their loads; and the cell sums of the
     // volumetric smoothing.
-    using L     = ParticleLayout<dim>;
-    using Point = typename Smoothing::Point;
+    using L                 = ParticleLayout<dim>;
+    using Point             = typename Smoothing::Point;
+    const bool small_strain = state.params.implicit.small_strain;
     stencils.begin_cell();
     points.clear();
     loads.clear();
@@ -808,6 +817,20 @@ namespace mpm
             q.h[i] +=
               increment.local_element(nodes[stencils.node(e)] * dim + i) *
               stencils.gradient(e);
+        if (small_strain)
+          {
+            // linearized: the strain increment sym(h), no rotation, no
+            // change of shape or volume
+            q.h     = symmetrize(q.h);
+            q.f     = unit_symmetric_tensor<dim>();
+            q.j     = 1;
+            q.f_inv = q.f;
+            q.F     = load_matrix<dim>(prop + L::F);
+            q.V_n   = prop[L::volume];
+            q.V0    = prop[L::volume0];
+            points.push_back(q);
+            continue;
+          }
         q.f = unit_symmetric_tensor<dim>();
         q.f += q.h;
         q.j = determinant(q.f);
@@ -861,7 +884,8 @@ namespace mpm
      * terms from d j = j tr(f^-1 dh) and d f^-1 = -f^-1 dh f^-1, the
      * material's through its tangent @p T = d sigma / d h. In a @p fixed
      * geometry the force takes P = j sigma (no push-forward), and so does
-     * its change.
+     * its change. With @p small_strain the force is sigma on the initial
+     * volume and the material sees sym(dh_eff): no geometric term.
      */
     template <int dim>
     Tensor<2, dim>
@@ -871,8 +895,11 @@ namespace mpm
                        const Tensor<4, 3>   &T,
                        const Tensor<2, dim> &dh,
                        const Tensor<2, dim> &dh_eff,
-                       const bool            fixed)
+                       const bool            fixed,
+                       const bool            small_strain)
     {
+      if (small_strain)
+        return material_change(T, Tensor<2, dim>(symmetrize(dh_eff)));
       const Tensor<2, dim> ds = material_change(T, dh_eff);
       if (fixed)
         return (j * trace(f_inv * dh)) * s + j * ds;
@@ -883,7 +910,8 @@ namespace mpm
     }
 
     /// The change of the Kirchhoff stress tau = j sigma of the step (the
-    /// in-plane part) by @p dh, with @p dh_eff and @p T as above.
+    /// in-plane part) by @p dh, with @p dh_eff, @p T and @p small_strain
+    /// as above.
     template <int dim>
     SymmetricTensor<2, dim>
     kirchhoff_change(const Tensor<2, dim> &s,
@@ -891,8 +919,12 @@ namespace mpm
                      const Tensor<2, dim> &f_inv,
                      const Tensor<4, 3>   &T,
                      const Tensor<2, dim> &dh,
-                     const Tensor<2, dim> &dh_eff)
+                     const Tensor<2, dim> &dh_eff,
+                     const bool            small_strain)
     {
+      if (small_strain)
+        return symmetrize(
+          material_change(T, Tensor<2, dim>(symmetrize(dh_eff))));
       return symmetrize(j * trace(f_inv * dh) * s +
                         j * material_change(T, dh_eff));
     }
@@ -918,6 +950,7 @@ namespace mpm
     double *const f_int          = internal_force.begin();
     double *const f_ext          = external_force.begin();
     const bool    fixed_geometry = state.params.implicit.fixed_geometry;
+    const bool    small_strain   = state.params.implicit.small_strain;
     materials::PointKinematics kinematics, tangent_kinematics;
     kinematics.dt         = dt;
     tangent_kinematics.dt = dt;
@@ -1048,8 +1081,14 @@ namespace mpm
             Tensor<2, dim> by_average = unit_symmetric_tensor<dim>() / dim;
             if (total)
               by_average = q.alpha / (dim * J_bar) * q.f;
-            const Tensor<2, dim> dP = first_piola_change(
-              s, q.j, q.f_inv, T, Tensor<2, dim>(), by_average, fixed_geometry);
+            const Tensor<2, dim> dP = first_piola_change(s,
+                                                         q.j,
+                                                         q.f_inv,
+                                                         T,
+                                                         Tensor<2, dim>(),
+                                                         by_average,
+                                                         fixed_geometry,
+                                                         small_strain);
             node_force_derivative.assign(n, 0.);
             for (unsigned int e = stencils.begin(p); e < stencils.end(p); ++e)
               {
@@ -1080,12 +1119,12 @@ namespace mpm
                     dh;
                 if (filtered)
                   {
-                    filtered_changes[p * n + b * dim + k] =
-                      kirchhoff_change(s, q.j, q.f_inv, T, dh, dh_eff);
+                    filtered_changes[p * n + b * dim + k] = kirchhoff_change(
+                      s, q.j, q.f_inv, T, dh, dh_eff, small_strain);
                     continue;
                   }
                 const Tensor<2, dim> dP = first_piola_change(
-                  s, q.j, q.f_inv, T, dh, dh_eff, fixed_geometry);
+                  s, q.j, q.f_inv, T, dh, dh_eff, fixed_geometry, small_strain);
                 for (unsigned int e = stencils.begin(p); e < stencils.end(p);
                      ++e)
                   {

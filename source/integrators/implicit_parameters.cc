@@ -167,17 +167,22 @@ namespace mpm
       prm.declare_entry(
         "Geometry",
         "updated",
-        Selection("updated|fixed"),
+        Selection("updated|fixed|small strain"),
         "updated: each converged step moves the particles and their "
         "domains (updated-Lagrangian, large deformation). fixed: the "
         "particles, their domains and the bodies of prescribed motion stay "
         "where the run starts, and every step finds equilibrium in that "
-        "undeformed shape, the small-deformation analysis of finite "
-        "elements: a limit load without the change of shape that a large "
-        "settlement brings (doc/guide/implicit.md). The material is updated "
-        "as with updated: F and the volumes accumulate the steps' "
-        "increments. Not with a family whose domain follows F (cpGIMP, "
-        "CPDI), nor with Integrator = explicit.");
+        "undeformed shape: a limit load without the change of shape that a "
+        "large settlement brings (doc/guide/implicit.md). The material is "
+        "updated as with updated: F and the volumes accumulate the steps' "
+        "increments. small strain: fixed, with linearized kinematics: the "
+        "material's strain increment is the symmetric part of the step's "
+        "displacement gradient, without rotation, F and the volumes stay "
+        "as they start, and the force is sigma on the initial volumes, the "
+        "small-deformation analysis of finite elements; for the rate-form "
+        "models (linear elastic, von Mises plasticity) with Strain "
+        "increment = start of step. Neither with a family whose domain "
+        "follows F (cpGIMP, CPDI), nor with Integrator = explicit.");
       prm.leave_subsection();
     }
 
@@ -213,7 +218,8 @@ namespace mpm
       max_linear_iterations = prm.get_integer("Maximum linear iterations");
       min_nodal_support     = prm.get_double("Minimum nodal support");
       ghost_penalty         = prm.get_double("Ghost penalty");
-      fixed_geometry        = prm.get("Geometry") == "fixed";
+      small_strain          = prm.get("Geometry") == "small strain";
+      fixed_geometry        = prm.get("Geometry") != "updated";
       prm.leave_subsection();
       if (!(residual_tolerance > 0) && !(absolute_residual_tolerance > 0))
         throw InputError("Implicit solver: Residual tolerance and Absolute "

@@ -1074,9 +1074,10 @@ namespace mpm
       if (implicit.fixed_geometry &&
           time.integrator == TimeStepping::Integrator::explicit_dynamics)
         throw InputError(
-          "Implicit solver/Geometry = fixed needs Time stepping/Integrator = "
-          "quasi-static or Newmark (the explicit step always moves the "
-          "particles)");
+          std::string("Implicit solver/Geometry = ") +
+          (implicit.small_strain ? "small strain" : "fixed") +
+          " needs Time stepping/Integrator = quasi-static or Newmark (the "
+          "explicit step always moves the particles)");
       bodies.resize(n_bodies);
       const ConstantsScope scope(constants);
       contact.parse_parameters(prm);

@@ -80,7 +80,8 @@ namespace mpm
       domain_functions.get(),
       only,
       params.time.integrator ==
-        Parameters::TimeStepping::Integrator::explicit_dynamics);
+        Parameters::TimeStepping::Integrator::explicit_dynamics,
+      params.implicit.small_strain);
     local_error.record(r.error);
     return r.stable_time_step;
   }

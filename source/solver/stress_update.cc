@@ -18,8 +18,9 @@ namespace mpm
   namespace
   {
     /// The step's kinematics of the particle with properties @p prop:
-    /// L_p = @p grad_v and F = (I + dt L) F_old.
-    template <int dim>
+    /// L_p = @p grad_v and F = (I + dt L) F_old; with @p small_strain
+    /// L_p = sym(grad_v) and F = F_old.
+    template <int dim, bool small_strain>
     inline void
     step_kinematics(const Tensor<2, dim> &grad_v,
                     const double         *prop,
@@ -29,22 +30,30 @@ namespace mpm
     {
       using L                    = ParticleLayout<dim>;
       const Tensor<2, dim> F_old = load_matrix<dim>(prop + L::F);
-      L_p                        = grad_v;
-      F                          = F_old + dt * grad_v * F_old;
+      if constexpr (small_strain)
+        {
+          L_p = symmetrize(grad_v);
+          F   = F_old;
+          return;
+        }
+      L_p = grad_v;
+      F   = F_old + dt * grad_v * F_old;
     }
   } // namespace
 
-  template <int dim>
+  /// update_stress() with the kinematics chosen at compile time (the hot
+  /// loop has no branch for it).
+  template <int dim, bool small_strain>
   StressUpdateResult
-  update_stress(const BackgroundGrid<dim>       &grid,
-                Particles::ParticleHandler<dim> &particles,
-                const std::vector<Body<dim>>    &bodies,
-                const NodalVector               &kinematics,
-                const double                     dt,
-                NodalVector                     *volume_scratch,
-                const shape_functions::DomainShapeFunctions<dim> *domains,
-                const FieldSelection                             &only,
-                const bool pressure_over_cell)
+  update_stress_with(const BackgroundGrid<dim>       &grid,
+                     Particles::ParticleHandler<dim> &particles,
+                     const std::vector<Body<dim>>    &bodies,
+                     const NodalVector               &kinematics,
+                     const double                     dt,
+                     NodalVector                     *volume_scratch,
+                     const shape_functions::DomainShapeFunctions<dim> *domains,
+                     const FieldSelection                             &only,
+                     const bool pressure_over_cell)
   {
     using L                       = ParticleLayout<dim>;
     constexpr unsigned int     nv = shape_functions::n_q1<dim>;
@@ -88,18 +97,19 @@ namespace mpm
             geo.values_and_gradients(p.get_reference_location(), N, G);
           else
             geo.gradients(p.get_reference_location(), G);
-          step_kinematics<dim>(transfer::velocity_gradient<dim>(in, nodes, G),
-                               prop,
-                               dt,
-                               grad_v,
-                               F);
+          step_kinematics<dim, small_strain>(
+            transfer::velocity_gradient<dim>(in, nodes, G),
+            prop,
+            dt,
+            grad_v,
+            F);
           return true;
         }
       if (any_node) // the node average's Q1 values
         geo.values(p.get_reference_location(), N);
       if (!domains->evaluate(cell_index, ordinal, p, stencil, result.error))
         return false;
-      step_kinematics<dim>(
+      step_kinematics<dim, small_strain>(
         transfer::velocity_gradient<dim>(in, stencil), prop, dt, grad_v, F);
       return true;
     };
@@ -271,6 +281,39 @@ namespace mpm
     return result;
   }
 
+  template <int dim>
+  StressUpdateResult
+  update_stress(const BackgroundGrid<dim>       &grid,
+                Particles::ParticleHandler<dim> &particles,
+                const std::vector<Body<dim>>    &bodies,
+                const NodalVector               &kinematics,
+                const double                     dt,
+                NodalVector                     *volume_scratch,
+                const shape_functions::DomainShapeFunctions<dim> *domains,
+                const FieldSelection                             &only,
+                const bool pressure_over_cell,
+                const bool small_strain)
+  {
+    return small_strain ? update_stress_with<dim, true>(grid,
+                                                        particles,
+                                                        bodies,
+                                                        kinematics,
+                                                        dt,
+                                                        volume_scratch,
+                                                        domains,
+                                                        only,
+                                                        pressure_over_cell) :
+                          update_stress_with<dim, false>(grid,
+                                                         particles,
+                                                         bodies,
+                                                         kinematics,
+                                                         dt,
+                                                         volume_scratch,
+                                                         domains,
+                                                         only,
+                                                         pressure_over_cell);
+  }
+
   namespace
   {
     /// A particle's stability limit h/(c + |v|), with its wave speed c
@@ -365,6 +408,7 @@ namespace mpm
     NodalVector *,                                                     \
     const shape_functions::DomainShapeFunctions<d> *,                  \
     const FieldSelection &,                                            \
+    bool,                                                              \
     bool);                                                             \
   template std::pair<double, std::string> limiting_particle<d>(        \
     const BackgroundGrid<d> &,                                         \

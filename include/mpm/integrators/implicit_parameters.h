@@ -54,9 +54,13 @@ namespace mpm
       double       min_nodal_support     = 1e-4;
       /// beta of the ghost penalty on weakly covered cells (0: off)
       double ghost_penalty = 0;
-      /// Geometry = fixed: the particles and their domains stay where the
-      /// run starts (equilibrium in the undeformed shape)
+      /// Geometry = fixed or small strain: the particles and their
+      /// domains stay where the run starts (equilibrium in the undeformed
+      /// shape)
       bool fixed_geometry = false;
+      /// Geometry = small strain: the materials see the symmetric part of
+      /// the step's displacement gradient, F and the volumes stay
+      bool small_strain = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -33,6 +33,14 @@ namespace mpm
                     SymmetricTensor<2, 3>   &stress,
                     const ArrayView<double> &history) const override;
 
+      /// With Strain increment = start of step (midpoint takes h (I +
+      /// h/2)^-1).
+      bool
+      small_strain_increment() const override
+      {
+        return increment == elasticity::StrainIncrement::start_of_step;
+      }
+
       bool
       stress_tangent(const PointKinematics         &kinematics,
                      const SymmetricTensor<2, 3>   &stress_n,

@@ -142,6 +142,18 @@ namespace mpm
         return false;
       }
 
+      /**
+       * Whether the model reads a symmetric displacement gradient of the
+       * step, h = dt L, as the strain increment h itself, without turning
+       * the stress: the linearized kinematics of `Implicit
+       * solver/Geometry = small strain`.
+       */
+      virtual bool
+      small_strain_increment() const
+      {
+        return false;
+      }
+
       /// Stored strain energy per unit reference volume.
       virtual double
       strain_energy_density(const SymmetricTensor<2, 3>   &stress,

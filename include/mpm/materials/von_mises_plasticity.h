@@ -44,6 +44,14 @@ namespace mpm
                     SymmetricTensor<2, 3>   &stress,
                     const ArrayView<double> &history) const override;
 
+      /// With Strain increment = start of step (midpoint takes h (I +
+      /// h/2)^-1).
+      bool
+      small_strain_increment() const override
+      {
+        return increment == elasticity::StrainIncrement::start_of_step;
+      }
+
       /// Stored elastic energy: J times the complementary energy.
       double
       strain_energy_density(

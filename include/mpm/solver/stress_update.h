@@ -43,7 +43,9 @@ namespace mpm
    * field per pass, @p kinematics and @p volume_scratch that field's).
    * With @p pressure_over_cell (the explicit step) the bodies whose cell
    * pressure P2G applies over the cell (remedies::CellPressureForce) take
-   * the cell's exact volume change.
+   * the cell's exact volume change. With @p small_strain (Implicit
+   * solver/Geometry = small strain) the materials see the symmetric part
+   * of the velocity gradient, and F and the volumes stay.
    */
   template <int dim>
   StressUpdateResult
@@ -56,7 +58,8 @@ namespace mpm
     NodalVector                                      *volume_scratch = nullptr,
     const shape_functions::DomainShapeFunctions<dim> *domains        = nullptr,
     const FieldSelection                             &only           = {},
-    bool pressure_over_cell                                          = false);
+    bool pressure_over_cell                                          = false,
+    bool small_strain                                                = false);
 
   /// The stability limit of the current state (no update).
   template <int dim>
