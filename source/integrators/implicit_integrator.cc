@@ -838,7 +838,8 @@ namespace mpm
           {
             std::ostringstream s;
             s << "the trial increment inverts particle " << particle.get_id()
-              << " (det f = " << q.j << ")";
+              << " at (" << particle.get_location() << ") (det f = " << q.j
+              << ")";
             error = s.str();
             return false;
           }
