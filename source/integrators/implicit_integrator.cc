@@ -817,22 +817,13 @@ namespace mpm
             q.h[i] +=
               increment.local_element(nodes[stencils.node(e)] * dim + i) *
               stencils.gradient(e);
-        if (small_strain)
-          {
-            // linearized: the strain increment sym(h), no rotation, no
-            // change of shape or volume
-            q.h     = symmetrize(q.h);
-            q.f     = unit_symmetric_tensor<dim>();
-            q.j     = 1;
-            q.f_inv = q.f;
-            q.F     = load_matrix<dim>(prop + L::F);
-            q.V_n   = prop[L::volume];
-            q.V0    = prop[L::volume0];
-            points.push_back(q);
-            continue;
-          }
         q.f = unit_symmetric_tensor<dim>();
-        q.f += q.h;
+        // small strain: the strain increment sym(h), no rotation, and no
+        // change of shape or volume (f = I exactly, so j = 1 and F = F_n)
+        if (small_strain)
+          q.h = symmetrize(q.h);
+        else
+          q.f += q.h;
         q.j = determinant(q.f);
         if (!(q.j > 0 && std::isfinite(q.j)))
           {

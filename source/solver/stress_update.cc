@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 namespace mpm
 {
@@ -294,24 +295,19 @@ namespace mpm
                 const bool pressure_over_cell,
                 const bool small_strain)
   {
-    return small_strain ? update_stress_with<dim, true>(grid,
-                                                        particles,
-                                                        bodies,
-                                                        kinematics,
-                                                        dt,
-                                                        volume_scratch,
-                                                        domains,
-                                                        only,
-                                                        pressure_over_cell) :
-                          update_stress_with<dim, false>(grid,
-                                                         particles,
-                                                         bodies,
-                                                         kinematics,
-                                                         dt,
-                                                         volume_scratch,
-                                                         domains,
-                                                         only,
-                                                         pressure_over_cell);
+    const auto with = [&](const auto linear) {
+      return update_stress_with<dim, decltype(linear)::value>(
+        grid,
+        particles,
+        bodies,
+        kinematics,
+        dt,
+        volume_scratch,
+        domains,
+        only,
+        pressure_over_cell);
+    };
+    return small_strain ? with(std::true_type()) : with(std::false_type());
   }
 
   namespace
