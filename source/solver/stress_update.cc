@@ -89,7 +89,8 @@ namespace mpm
                              const unsigned int  ordinal,
                              const double       *prop,
                              Tensor<2, dim>     &grad_v,
-                             Tensor<2, dim>     &F) {
+                             Tensor<2, dim> &F) __attribute__((always_inline))
+    {
       if ((any_rigid && rigid[body_of(prop)]) || only.template skips<dim>(prop))
         return false;
       if (!domains)
@@ -160,9 +161,11 @@ namespace mpm
       }
 
     // The material update of one particle with kinematics L, F (new).
-    auto update_particle = [&](auto                 &p,
+    // The largest c + |v| of the cell's particles: one division per cell
+    // gives the cell's stable step (h / max = min of h / each, exactly).
+    double cell_fastest    = 0;
+    auto   update_particle = [&](auto                 &p,
                                double               *prop,
-                               const double          h,
                                const Tensor<2, dim> &grad_v,
                                const Tensor<2, dim> &F)
       __attribute__((always_inline))
@@ -209,8 +212,7 @@ namespace mpm
       for (unsigned int d = 0; d < dim; ++d)
         speed2 += prop[L::velocity + d] * prop[L::velocity + d];
       const double c = material.wave_speed(pk.F);
-      result.stable_time_step =
-        std::min(result.stable_time_step, h / (c + std::sqrt(speed2)));
+      cell_fastest   = std::max(cell_fastest, c + std::sqrt(speed2));
 
       // finite exactly when the norm is, without its square root
       if (!std::isfinite(sigma * sigma) && result.error.empty())
@@ -229,7 +231,13 @@ namespace mpm
       const auto         &geo        = grid.geometry(cell);
       const unsigned int *nodes      = grid.nodes(cell);
       const unsigned int  cell_index = cell->active_cell_index();
-      const double        h          = grid.cell_height(cell);
+      cell_fastest                   = 0;
+      const auto fold_stable_step    = [&]() {
+        if (cell_fastest > 0)
+          result.stable_time_step =
+            std::min(result.stable_time_step,
+                     grid.cell_height(cell) / cell_fastest);
+      };
       if (smoothing.any())
         {
           typename remedies::VolumetricSmoothing<dim>::CellRate cell_rate;
@@ -262,8 +270,9 @@ namespace mpm
                 double               *prop,
                 const Tensor<2, dim> &grad_v,
                 const Tensor<2, dim> &F) __attribute__((always_inline)) {
-              update_particle(p, prop, h, grad_v, F);
+              update_particle(p, prop, grad_v, F);
             });
+          fold_stable_step();
           return;
         }
       unsigned int ordinal = 0;
@@ -276,8 +285,9 @@ namespace mpm
             continue;
           store_matrix<dim>(F, prop + L::F);
           prop[L::volume] = determinant(F) * prop[L::volume0];
-          update_particle(p, prop, h, grad_v, F);
+          update_particle(p, prop, grad_v, F);
         }
+      fold_stable_step();
     });
     return result;
   }
