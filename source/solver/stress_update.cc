@@ -22,7 +22,7 @@ namespace mpm
     /// L_p = @p grad_v and F = (I + dt L) F_old; with @p small_strain
     /// L_p = sym(grad_v) and F = F_old.
     template <int dim, bool small_strain>
-    inline void
+    inline __attribute__((always_inline)) void
     step_kinematics(const Tensor<2, dim> &grad_v,
                     const double         *prop,
                     const double          dt,

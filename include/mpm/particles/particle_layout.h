@@ -109,7 +109,7 @@ namespace mpm
   };
 
   /// Voigt order of the stored stress: xx yy zz yz xz xy.
-  inline void
+  inline __attribute__((always_inline)) void
   store_stress(const dealii::SymmetricTensor<2, 3> &s, double *p)
   {
     p[0] = s[0][0];
@@ -120,7 +120,7 @@ namespace mpm
     p[5] = s[0][1];
   }
 
-  inline dealii::SymmetricTensor<2, 3>
+  inline __attribute__((always_inline)) dealii::SymmetricTensor<2, 3>
   load_stress(const double *p)
   {
     dealii::SymmetricTensor<2, 3> s;
@@ -135,7 +135,7 @@ namespace mpm
 
   /// The dim x dim (in-plane) part of the stored Voigt stress.
   template <int dim>
-  inline dealii::Tensor<2, dim>
+  inline __attribute__((always_inline)) dealii::Tensor<2, dim>
   in_plane_stress(const double *s)
   {
     dealii::Tensor<2, dim> sigma;
@@ -155,7 +155,7 @@ namespace mpm
   }
 
   template <int dim>
-  inline dealii::Tensor<2, dim>
+  inline __attribute__((always_inline)) dealii::Tensor<2, dim>
   load_matrix(const double *p)
   {
     dealii::Tensor<2, dim> t;
@@ -166,7 +166,7 @@ namespace mpm
   }
 
   template <int dim>
-  inline void
+  inline __attribute__((always_inline)) void
   store_matrix(const dealii::Tensor<2, dim> &t, double *p)
   {
     for (unsigned int i = 0; i < dim; ++i)
@@ -176,7 +176,7 @@ namespace mpm
 
   /// Embed a dim x dim tensor in 3x3 with @p diagonal on the added diagonal.
   template <int dim>
-  inline dealii::Tensor<2, 3>
+  inline __attribute__((always_inline)) dealii::Tensor<2, 3>
   embed(const dealii::Tensor<2, dim> &t, const double diagonal)
   {
     dealii::Tensor<2, 3> out;

@@ -62,7 +62,7 @@ namespace mpm
       }
 
       /// Shape function values at xi.
-      static void
+      static inline __attribute__((always_inline)) void
       values(const Point<dim> &xi, double *N)
       {
         for (unsigned int v = 0; v < n_vertices; ++v)
@@ -75,7 +75,7 @@ namespace mpm
       }
 
       /// Gradients with respect to xi.
-      static void
+      static inline __attribute__((always_inline)) void
       reference_gradients(const Point<dim> &xi, Tensor<1, dim> *dN)
       {
         for (unsigned int v = 0; v < n_vertices; ++v)

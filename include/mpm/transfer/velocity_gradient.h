@@ -14,7 +14,7 @@ namespace mpm
     /// the grid velocity's gradient at the particle (@p in: KinematicsLayout
     /// values, @p G: the cell's Q1 gradients there).
     template <int dim>
-    inline dealii::Tensor<2, dim>
+    inline __attribute__((always_inline)) dealii::Tensor<2, dim>
     velocity_gradient(const double                 *in,
                       const unsigned int           *nodes,
                       const dealii::Tensor<1, dim> *G)
@@ -34,7 +34,7 @@ namespace mpm
     /// The same with a particle-domain family's stencil: sum_i v_i (x)
     /// grad S_ip.
     template <int dim>
-    inline dealii::Tensor<2, dim>
+    inline __attribute__((always_inline)) dealii::Tensor<2, dim>
     velocity_gradient(const double                        *in,
                       const shape_functions::Stencil<dim> &stencil)
     {
