@@ -65,7 +65,7 @@ namespace mpm
     n_ghost = partitioner->n_ghost_indices();
 
     owned_cell_list.clear();
-    occupied_cell_list.clear();
+    index.clear();
     particles_changed_cells();
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())

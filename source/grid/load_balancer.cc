@@ -130,6 +130,7 @@ namespace mpm
         grid.setup(bc);
         if (!planned)
           particles.update_cached_numbers();
+        grid.particles_changed_cells();
         ++n_repartitions;
       }
     (void)bc;

@@ -129,7 +129,7 @@ namespace mpm
             Point<dim>        target_xi;
             if (!find_cell(grid, cell, x, xi, target, target_xi))
               {
-                far.emplace_back(x, it);
+                far.emplace_back(x, pic.handler_iterator(*it));
                 continue;
               }
             const auto props = it->get_properties();
@@ -154,7 +154,7 @@ namespace mpm
                   buffer.push_back(target_xi[d]);
                 buffer.insert(buffer.end(), props.begin(), props.end());
               }
-            leaving.push_back(it);
+            leaving.push_back(pic.handler_iterator(*it));
           }
       });
 

@@ -292,6 +292,7 @@ namespace mpm
           throw InputError(e.what());
         }
     state.particle_handler.update_cached_numbers();
+    state.background.particles_changed_cells();
     if (state.particle_handler.n_global_particles() != s.n_particles)
       throw InputError(
         "the checkpoint '" + folder + "' holds " +

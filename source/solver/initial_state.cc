@@ -454,6 +454,7 @@ namespace mpm
         id_offset += expected;
       }
     state.particle_handler.update_cached_numbers();
+    state.background.particles_changed_cells();
   }
 
 #define MPM_INSTANTIATE(d)                                                     \

@@ -226,7 +226,10 @@ namespace mpm
       }
     throw_if_any<RuntimeError>(comm, "", bad_value);
     if (any_layer)
-      state.particle_handler.update_cached_numbers();
+      {
+        state.particle_handler.update_cached_numbers();
+        state.background.particles_changed_cells();
+      }
   }
 
   template <int dim>

@@ -9,6 +9,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <mpm/grid/grid_parameters.h>
+#include <mpm/particles/particle_index.h>
 #include <mpm/shape_functions/q1_cell.h>
 
 #include <array>
@@ -83,19 +84,19 @@ namespace mpm
       return owned_cell_list;
     }
 
-    /// The owned cells that held particles at the last particle loop, in
-    /// active cell index order: kept and checked by
+    /// The locally owned particles by cell (cells in active cell index
+    /// order), as of the last particle loop: kept and rebuilt by
     /// for_each_cell_with_particles() (particles/cell_loop.h), emptied
     /// whenever the grid's cells change.
-    std::vector<ActiveCell> &
-    cells_with_particles() const
+    ParticleIndex<dim> &
+    particle_index() const
     {
-      return occupied_cell_list;
+      return index;
     }
 
-    /// Whether cells_with_particles() has been checked against @p
-    /// particles since they last changed cells (particles_changed_cells(),
-    /// or a change of their number), and mark it so.
+    /// Whether particle_index() has been built from @p particles since
+    /// they last changed cells (particles_changed_cells(), or a change of
+    /// their number), and mark it so.
     template <typename Handler>
     bool
     check_cells_with_particles(const Handler &particles) const
@@ -108,8 +109,9 @@ namespace mpm
       return checked;
     }
 
-    /// Particles may be in other cells now (moved, sorted, inserted,
-    /// removed): the next particle loop checks cells_with_particles().
+    /// Particles may be in other cells or other places of the handler's
+    /// storage now (moved, sorted, inserted, removed, restored): the next
+    /// particle loop rebuilds particle_index().
     void
     particles_changed_cells() const
     {
@@ -337,7 +339,7 @@ namespace mpm
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
     std::vector<shape_functions::Q1Cell<dim>>                  cell_geometry;
     std::vector<ActiveCell>                                    owned_cell_list;
-    mutable std::vector<ActiveCell> occupied_cell_list;
+    mutable ParticleIndex<dim>                                 index;
     mutable const void             *checked_handler = nullptr;
     mutable std::size_t             checked_count   = 0;
     std::vector<unsigned int>       cell_nodes;

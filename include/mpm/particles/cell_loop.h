@@ -8,10 +8,13 @@ namespace mpm
 {
   /**
    * The hot loops' skeleton: visit every locally owned cell that holds
-   * particles, calling f(cell, particles_in_cell). Walking particles cell
-   * by cell lets each loop evaluate the cell's geometry once and gather or
-   * scatter nodal values with the cell's node indices. @p f may change
-   * what particles carry, not which cell holds them.
+   * particles, calling f(cell, particles) with the cell's particles as a
+   * range of ParticleRef (particles/particle_index.h). Walking particles
+   * cell by cell lets each loop evaluate the cell's geometry once and
+   * gather or scatter nodal values with the cell's node indices; reading
+   * them through the grid's particle index spares each loop the walk
+   * through deal.II's particle containers. @p f may change what particles
+   * carry, not which cell holds them.
    */
   template <int dim, typename Function>
   inline void
@@ -20,33 +23,18 @@ namespace mpm
     dealii::Particles::ParticleHandler<dim> &particles,
     const Function                          &f)
   {
-    // The cells that held particles in the previous loop, as long as
-    // they still hold every particle: particles change cell now and then,
-    // and a grid may be much larger than its bodies, whose empty cells
-    // then cost nothing. The list stays in active cell index order, so
-    // sums over cells keep their order (bit-identical runs and restarts).
-    // It is checked once after the particles changed cells (the loops of
-    // one step between two relocations share the check: counting the
-    // particles of each cell costs deal.II a cell lookup).
-    auto &cells = grid.cells_with_particles();
-    if (!grid.check_cells_with_particles(particles))
+    auto &index = grid.particle_index();
+    if (!grid.check_cells_with_particles(particles) ||
+        !index.still_matches(particles))
       {
-        dealii::types::particle_index held = 0;
-        for (const auto &cell : cells)
-          held += particles.n_particles_in_cell(cell);
-        if (held != particles.n_locally_owned_particles())
-          {
-            cells.clear();
-            for (const auto &cell : grid.owned_cells())
-              if (particles.n_particles_in_cell(cell) > 0)
-                cells.push_back(cell);
-          }
+        // the cells that held particles are tried first: walking the
+        // whole grid would make a step cost what the grid costs
+        const auto cells = index.cells();
+        if (!index.build(particles, cells))
+          index.build(particles, grid.owned_cells());
       }
-    for (const auto &cell : cells)
-      {
-        const auto pic = particles.particles_in_cell(cell);
-        if (pic.begin() != pic.end())
-          f(cell, pic);
-      }
+    const auto &cells = index.cells();
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      f(cells[c], index.particles_of(c));
   }
 } // namespace mpm

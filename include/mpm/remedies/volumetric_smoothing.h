@@ -1,9 +1,9 @@
 #pragma once
 
 #include <deal.II/base/tensor.h>
-#include <deal.II/particles/particle_iterator.h>
 
 #include <mpm/particles/body.h>
+#include <mpm/particles/particle_index.h>
 #include <mpm/particles/particle_layout.h>
 #include <mpm/remedies/volumetric_smoothing_remedy.h>
 #include <mpm/shape_functions/q1_cell.h>
@@ -203,10 +203,10 @@ namespace mpm
       /// walks this list, not the cell's particles again.
       struct Buffered
       {
-        dealii::Particles::ParticleIterator<dim> particle;
-        double                                  *prop;
-        dealii::Tensor<2, dim>                   grad_v, F;
-        double                                   J;
+        const ParticleRef<dim> *particle;
+        double                 *prop;
+        dealii::Tensor<2, dim>  grad_v, F;
+        double                  J;
       };
       std::vector<Buffered> buffer;
     };
