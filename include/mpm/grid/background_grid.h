@@ -94,28 +94,13 @@ namespace mpm
       return index;
     }
 
-    /// Whether particle_index() has been built from @p particles since
-    /// they last changed cells (particles_changed_cells(), or a change of
-    /// their number), and mark it so.
-    template <typename Handler>
-    bool
-    check_cells_with_particles(const Handler &particles) const
-    {
-      const bool checked =
-        checked_handler == &particles &&
-        checked_count == particles.n_locally_owned_particles();
-      checked_handler = &particles;
-      checked_count   = particles.n_locally_owned_particles();
-      return checked;
-    }
-
     /// Particles may be in other cells or other places of the handler's
     /// storage now (moved, sorted, inserted, removed, restored): the next
     /// particle loop rebuilds particle_index().
     void
     particles_changed_cells() const
     {
-      checked_handler = nullptr;
+      index.invalidate();
     }
 
     /// Geometry of an owned or ghost cell.
@@ -340,16 +325,14 @@ namespace mpm
     std::vector<shape_functions::Q1Cell<dim>>                  cell_geometry;
     std::vector<ActiveCell>                                    owned_cell_list;
     mutable ParticleIndex<dim>                                 index;
-    mutable const void             *checked_handler = nullptr;
-    mutable std::size_t             checked_count   = 0;
-    std::vector<unsigned int>       cell_nodes;
-    std::vector<unsigned int>       neighbors;
-    std::vector<double>             cell_heights;
-    std::vector<dealii::Point<dim>> node_positions;
-    std::vector<unsigned int>       constraint_of_node;
-    std::vector<NodeConstraint>     constraints;
-    std::vector<char>               moving_node; ///< on_moving_boundary()
-    unsigned int                    n_owned = 0, n_ghost = 0;
-    bool                            cartesian = false;
+    std::vector<unsigned int>                                  cell_nodes;
+    std::vector<unsigned int>                                  neighbors;
+    std::vector<double>                                        cell_heights;
+    std::vector<dealii::Point<dim>>                            node_positions;
+    std::vector<unsigned int>   constraint_of_node;
+    std::vector<NodeConstraint> constraints;
+    std::vector<char>           moving_node; ///< on_moving_boundary()
+    unsigned int                n_owned = 0, n_ghost = 0;
+    bool                        cartesian = false;
   };
 } // namespace mpm

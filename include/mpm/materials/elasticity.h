@@ -45,6 +45,15 @@ namespace mpm
           return lame_lambda;
         }
 
+        /// The in-plane lambda of plane stress, 2 lambda mu / (lambda +
+        /// 2 mu): eliminating eps_zz with sigma_zz = 0.
+        double
+        plane_stress_lambda() const
+        {
+          return 2 * lame_lambda * shear_modulus /
+                 (lame_lambda + 2 * shear_modulus);
+        }
+
         /// Shear modulus.
         double
         mu() const
@@ -128,10 +137,7 @@ namespace mpm
         switch (k)
           {
               case KinematicAssumption::plane_stress: {
-                // Eliminating eps_zz with sigma_zz = 0 gives the in-plane
-                // law with a reduced lambda.
-                const double lambda      = c.lambda();
-                const double lambda_star = 2 * lambda * mu / (lambda + 2 * mu);
+                const double lambda_star = c.plane_stress_lambda();
                 const double trace_2d    = d_eps[0][0] + d_eps[1][1];
                 for (unsigned int i = 0; i < 2; ++i)
                   for (unsigned int j = i; j < 2; ++j)
@@ -282,8 +288,7 @@ namespace mpm
         switch (k)
           {
               case KinematicAssumption::plane_stress: {
-                const double lambda = c.lambda(), mu = c.mu();
-                const double lambda_star = 2 * lambda * mu / (lambda + 2 * mu);
+                const double lambda_star = c.plane_stress_lambda();
                 const double trace_2d    = g00 + g11;
                 stress[0][0] += two_mu * g00 + lambda_star * trace_2d;
                 stress[1][1] += two_mu * g11 + lambda_star * trace_2d;

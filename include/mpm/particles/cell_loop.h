@@ -24,8 +24,7 @@ namespace mpm
     const Function                          &f)
   {
     auto &index = grid.particle_index();
-    if (!grid.check_cells_with_particles(particles) ||
-        !index.still_matches(particles))
+    if (!index.up_to_date(particles))
       {
         // the cells that held particles are tried first: walking the
         // whole grid would make a step cost what the grid costs

@@ -182,23 +182,38 @@ namespace mpm
           clear();
           return false;
         }
+      handler       = &particles;
+      handler_count = refs.size();
       handler_start = start_of(particles);
       return true;
     }
 
-    /// Whether the handler's first particle is still where the index saw
-    /// it: a cheap guard against a handler whose storage changed without
-    /// particles_changed_cells() (another handler at the same address, a
-    /// reallocated pool).
+    /// Whether the index was built from @p particles and is still valid:
+    /// not invalidated since, the same particle count, and the handler's
+    /// first particle where the index saw it. The last two are a cheap,
+    /// partial guard (a reallocated pool, another handler at the same
+    /// address); whatever moves particles between cells at the same count
+    /// must call invalidate().
     bool
-    still_matches(dealii::Particles::ParticleHandler<dim> &particles) const
+    up_to_date(dealii::Particles::ParticleHandler<dim> &particles) const
     {
-      return start_of(particles) == handler_start;
+      return handler == &particles &&
+             handler_count == particles.n_locally_owned_particles() &&
+             handler_start == start_of(particles);
+    }
+
+    /// The particles may have changed cells or storage: the next
+    /// up_to_date() is false.
+    void
+    invalidate()
+    {
+      handler = nullptr;
     }
 
     void
     clear()
     {
+      invalidate();
       handler_start = nullptr;
       cell_list.clear();
       first_of_cell.clear();
@@ -231,6 +246,8 @@ namespace mpm
                particles.begin()->get_properties().data();
     }
 
+    const void              *handler       = nullptr;
+    std::size_t              handler_count = 0;
     const double            *handler_start = nullptr;
     std::vector<ActiveCell>  cell_list;
     std::vector<std::size_t> first_of_cell;
